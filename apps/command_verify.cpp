@@ -1,0 +1,47 @@
+// firn verify [NAME]... [--threads N]
+// Runs known-answer problems; prints CSV on stdout with the header
+// problem,level,dx,particles_per_cell,steps,error,bound,seconds and exits 0 only if every error is
+// within its bound. Histories (energy per transfer scheme) go to standard error.
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "apps/commands.hpp"
+#include "engine/verification/verification.hpp"
+
+namespace firn::app {
+
+void add_verify_command(CLI::App& app) {
+  struct Options {
+    std::vector<std::string> names;
+    int threads = 0;
+  };
+  auto opts = std::make_shared<Options>();
+  CLI::App* verify = app.add_subcommand("verify", "run known-answer problems and check their errors");
+  verify->add_option("names", opts->names, "problems to run (default: all)")
+      ->check(CLI::IsMember(verification_problems()));
+  verify->add_option("--threads", opts->threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  verify->callback([opts]() {
+    VerificationOptions options;
+    options.threads = opts->threads;
+    options.log = &std::cerr;
+    const std::vector<std::string> names = opts->names.empty() ? verification_problems() : opts->names;
+    std::printf("problem,level,dx,particles_per_cell,steps,error,bound,seconds\n");
+    int failed = 0;
+    for (const std::string& name : names)
+      for (const VerificationRow& r : run_verification(name, options)) {
+        std::printf("%s,%d,%.6g,%d,%ld,%.6g,%.6g,%.3f\n", r.problem.c_str(), r.level, r.dx, r.particles_per_cell,
+                    r.steps, r.error, r.bound, r.seconds);
+        std::fflush(stdout);
+        if (!r.passed()) {
+          std::fprintf(stderr, "firn verify: %s level %d: error %.6g exceeds its bound %.6g\n", r.problem.c_str(),
+                       r.level, r.error, r.bound);
+          ++failed;
+        }
+      }
+    set_exit_status(failed ? 1 : 0);
+  });
+}
+
+}  // namespace firn::app

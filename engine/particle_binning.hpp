@@ -1,0 +1,162 @@
+// Bins particles by (material, grid block of their stencil base node) with a stable counting
+// sort, so that P2G and G2P can walk the particles block by block (DESIGN.md section 2, rule 7).
+// The sort is stable on the physical index, so its result is unique and independent of the thread
+// count. The particle arrays themselves are reordered only when the walk has become scattered
+// (see needs_reorder), since most steps move few particles across a block boundary.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "engine/aligned_vector.hpp"
+#include "kernels/backend/block_colouring.hpp"
+#include "kernels/grid_geometry.hpp"
+#include "kernels/particle_attributes.hpp"
+
+namespace firn {
+
+struct ParticleRange {
+  std::size_t begin, end;
+};
+
+class ParticleBinning {
+ public:
+  static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+  // Computes every particle's key; returns the first particle whose stencil leaves the grid (or
+  // that is not finite), or kNone. `materials` are the contiguous material ranges.
+  template <class ShapeT, class T, class Backend>
+  std::size_t compute_keys(const ParticleView<T>& pv, const std::vector<ParticleRange>& materials,
+                           const GridGeometry<T>& g, const int blocks[3], const Backend& backend) {
+    keys_.resize(pv.n);
+    block_count_ = std::size_t(blocks[0]) * blocks[1] * blocks[2];
+    material_count_ = materials.size();
+    std::uint32_t* keys = keys_.data();
+    std::size_t first_bad = kNone;
+    for (std::size_t m = 0; m < materials.size(); ++m) {
+      const std::size_t begin = materials[m].begin;
+      const std::uint32_t key0 = std::uint32_t(m * block_count_);
+      const int b1 = blocks[1], b2 = blocks[2];
+      const std::size_t bad = backend.parallel_reduce(
+          "bin.keys", materials[m].end - begin, kNone,
+          [=](std::size_t i, std::size_t& acc) {
+            const std::size_t p = begin + i;
+            int bc[3];
+            bool inside = true;
+            for (int d = 0; d < 3; ++d) {
+              const T s = (pv.x[d][p] - g.origin[d]) * g.inv_dx - ShapeT::kOffset;
+              // Negated comparisons also reject NaN.
+              if (!(s >= T(0) && s < T(g.nodes[d] - ShapeT::kSupport + 1))) inside = false;
+              bc[d] = inside ? int(s) >> kBlockShift : 0;
+            }
+            keys[p] = key0 + std::uint32_t((bc[0] * b1 + bc[1]) * b2 + bc[2]);
+            if (!inside && p < acc) acc = p;
+          },
+          [](std::size_t& a, std::size_t b) { a = b < a ? b : a; });
+      if (bad < first_bad) first_bad = bad;
+    }
+    return first_bad;
+  }
+
+  // Stable counting sort of the keys: order, bucket ranges, particle blocks and their colouring.
+  template <class Backend>
+  void sort(const int blocks[3], const Backend& backend) {
+    const std::size_t n = keys_.size(), K = material_count_ * block_count_;
+    const std::size_t parts = std::size_t(backend.threads());
+    counts_.assign(parts * K, 0);
+    const std::uint32_t* keys = keys_.data();
+    std::uint32_t* counts = counts_.data();
+    auto part_begin = [=](std::size_t t) { return t * n / parts; };
+    backend.parallel_for("bin.count", parts, [=](std::size_t t) {
+      for (std::size_t p = part_begin(t); p < part_begin(t + 1); ++p) ++counts[t * K + keys[p]];
+    });
+    // Exclusive prefix, bucket-major then part: part t's particles of bucket k follow part t-1's.
+    bucket_begin_.resize(K + 1);
+    std::uint32_t running = 0;
+    for (std::size_t k = 0; k < K; ++k) {
+      bucket_begin_[k] = running;
+      for (std::size_t t = 0; t < parts; ++t) {
+        const std::uint32_t c = counts[t * K + k];
+        counts[t * K + k] = running;
+        running += c;
+      }
+    }
+    bucket_begin_[K] = running;
+    order_.resize(n);
+    std::uint32_t* order = order_.data();
+    backend.parallel_for("bin.scatter", parts, [=](std::size_t t) {
+      for (std::size_t p = part_begin(t); p < part_begin(t + 1); ++p) order[counts[t * K + keys[p]]++] = std::uint32_t(p);
+    });
+    collect_blocks(blocks);
+  }
+
+  // True when walking the particles in block order jumps around memory often enough that
+  // reordering the arrays pays: more than one break in the order per kReorderRun particles.
+  template <class Backend>
+  bool needs_reorder(const Backend& backend) const {
+    static constexpr std::size_t kReorderRun = 64;
+    const std::uint32_t* order = order_.data();
+    const std::size_t n = order_.size();
+    if (n < 2) return false;
+    const std::size_t breaks = backend.parallel_reduce(
+        "bin.breaks", n - 1, std::size_t(0),
+        [=](std::size_t i, std::size_t& acc) { acc += order[i + 1] != order[i] + 1; },
+        [](std::size_t& a, std::size_t b) { a += b; });
+    return breaks * kReorderRun > n;
+  }
+
+  // After the particle arrays were permuted by order(): the order is the identity.
+  template <class Backend>
+  void reordered(const Backend& backend) {
+    std::uint32_t* order = order_.data();
+    backend.parallel_for("bin.identity", order_.size(), [=](std::size_t i) { order[i] = std::uint32_t(i); });
+  }
+
+  const std::uint32_t* order() const { return order_.data(); }
+  // Sorted positions of material m's particles in block b: [bucket_begin(m, b), bucket_end(m, b)).
+  std::uint32_t bucket_begin(std::size_t m, std::uint32_t b) const { return bucket_begin_[m * block_count_ + b]; }
+  std::uint32_t bucket_end(std::size_t m, std::uint32_t b) const { return bucket_begin_[m * block_count_ + b + 1]; }
+  std::size_t material_count() const { return material_count_; }
+  // Blocks holding particles, in increasing id, and the same grouped by parity colour.
+  const std::vector<std::uint32_t>& particle_blocks() const { return particle_blocks_; }
+  backend::BlockColouring colouring() const {
+    backend::BlockColouring c;
+    c.blocks = coloured_.data();
+    for (int i = 0; i <= backend::BlockColouring::kColours; ++i) c.begin[i] = colour_begin_[i];
+    return c;
+  }
+
+ private:
+  void collect_blocks(const int blocks[3]) {
+    particle_blocks_.clear();
+    std::size_t per_colour[backend::BlockColouring::kColours] = {};
+    const int syz = blocks[1] * blocks[2];
+    for (std::size_t b = 0; b < block_count_; ++b) {
+      bool occupied = false;
+      for (std::size_t m = 0; m < material_count_ && !occupied; ++m)
+        occupied = bucket_begin_[m * block_count_ + b] != bucket_begin_[m * block_count_ + b + 1];
+      if (!occupied) continue;
+      particle_blocks_.push_back(std::uint32_t(b));
+      ++per_colour[colour_of(b, syz, blocks[2])];
+    }
+    colour_begin_[0] = 0;
+    for (int c = 0; c < backend::BlockColouring::kColours; ++c) colour_begin_[c + 1] = colour_begin_[c] + per_colour[c];
+    coloured_.resize(particle_blocks_.size());
+    std::size_t next[backend::BlockColouring::kColours];
+    for (int c = 0; c < backend::BlockColouring::kColours; ++c) next[c] = colour_begin_[c];
+    for (std::uint32_t b : particle_blocks_) coloured_[next[colour_of(b, syz, blocks[2])]++] = b;
+  }
+  static int colour_of(std::size_t b, int syz, int bz_count) {
+    return backend::block_colour(int(b) / syz, (int(b) / bz_count) % (syz / bz_count), int(b) % bz_count);
+  }
+
+  std::size_t block_count_ = 0, material_count_ = 0;
+  AlignedVector<std::uint32_t> keys_, order_;
+  std::vector<std::uint32_t> counts_, bucket_begin_;
+  std::vector<std::uint32_t> particle_blocks_, coloured_;
+  std::size_t colour_begin_[backend::BlockColouring::kColours + 1] = {};
+};
+
+}  // namespace firn

@@ -1,0 +1,88 @@
+// Owns the particle arrays: one aligned column per scalar component of every attribute in
+// FIRN_PARTICLE_ATTRIBUTES. Attributes marked on_demand are allocated only when enabled.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+
+#include "engine/aligned_vector.hpp"
+#include "kernels/particle_attributes.hpp"
+
+namespace firn {
+
+template <class T>
+class ParticleStorage {
+ public:
+  ParticleStorage() {
+#define FIRN_ENABLE_ALWAYS(name, n, kind, alloc, doc) enabled_[int(Attribute::name)] = is_always(#alloc);
+    FIRN_PARTICLE_ATTRIBUTES(FIRN_ENABLE_ALWAYS)
+#undef FIRN_ENABLE_ALWAYS
+  }
+
+  std::size_t size() const { return size_; }
+  bool has(Attribute a) const { return enabled_[int(a)]; }
+
+  // Allocates an on_demand attribute, zero-filled.
+  void enable(Attribute a) {
+    enabled_[int(a)] = true;
+    resize(size_);
+  }
+
+  // Resizes every enabled column; new entries are zero.
+  void resize(std::size_t n) {
+#define FIRN_RESIZE(name, n_, kind, alloc, doc) \
+  for (auto& col : name##_) col.resize(has(Attribute::name) ? n : 0);
+    FIRN_PARTICLE_ATTRIBUTES(FIRN_RESIZE)
+#undef FIRN_RESIZE
+    size_ = n;
+  }
+
+  ParticleView<T> view() {
+    ParticleView<T> v;
+#define FIRN_FILL_VIEW(name, n, kind, alloc, doc) assign(v.name, name##_);
+    FIRN_PARTICLE_ATTRIBUTES(FIRN_FILL_VIEW)
+#undef FIRN_FILL_VIEW
+    v.n = size_;
+    return v;
+  }
+
+  // Reorders every enabled column: new[i] = old[order[i]], using the backend for the copies.
+  template <class Backend>
+  void permute(const std::uint32_t* order, const Backend& backend) {
+#define FIRN_PERMUTE(name, n, kind, alloc, doc) \
+  for (auto& col : name##_)                     \
+    if (!col.empty()) gather(col, order, backend);
+    FIRN_PARTICLE_ATTRIBUTES(FIRN_PERMUTE)
+#undef FIRN_PERMUTE
+  }
+
+ private:
+  static constexpr bool is_always(const char* alloc) { return alloc[0] == 'a'; }
+
+  template <class S, std::size_t N>
+  static void assign(S* (&dst)[N], AlignedVector<S> (&src)[N]) {
+    for (std::size_t i = 0; i < N; ++i) dst[i] = src[i].empty() ? nullptr : src[i].data();
+  }
+  template <class S>
+  static void assign(S*& dst, AlignedVector<S> (&src)[1]) {
+    dst = src[0].empty() ? nullptr : src[0].data();
+  }
+
+  template <class S, class Backend>
+  void gather(AlignedVector<S>& col, const std::uint32_t* order, const Backend& backend) {
+    AlignedVector<S> out(col.size());
+    S* o = out.data();
+    const S* in = col.data();
+    backend.parallel_for("particles.permute", col.size(), [=](std::size_t i) { o[i] = in[order[i]]; });
+    col.swap(out);
+  }
+
+#define FIRN_STORAGE_MEMBER(name, n, kind, alloc, doc) AlignedVector<FIRN_SCALAR_##kind(T)> name##_[n];
+  FIRN_PARTICLE_ATTRIBUTES(FIRN_STORAGE_MEMBER)
+#undef FIRN_STORAGE_MEMBER
+  bool enabled_[int(Attribute::count)] = {};
+  std::size_t size_ = 0;
+};
+
+}  // namespace firn

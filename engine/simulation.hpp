@@ -1,0 +1,434 @@
+// The engine's step loop and the small C++ API to build a simulation in code (used by tests,
+// benchmarks and `firn verify`; scene files build on it).
+//
+//   Simulation<float, backend::OpenMP> sim(config);
+//   int snow = sim.add_material({"snow", "neo_hookean", 400, ElasticModuli::from_E_nu(1.4e5, 0.2)});
+//   sim.add_particles(snow, fill_sphere(...), {0, 0, -2}, volume_per_particle);
+//   sim.advance_to(1.0);
+//
+// One step reads like the algorithm (DESIGN.md section 3):
+//   bin -> stress (one launch per material) -> P2G -> grid update -> G2P with the stability guard.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "engine/elastic_moduli.hpp"
+#include "engine/materials.hpp"
+#include "engine/particle_binning.hpp"
+#include "engine/particle_fill.hpp"
+#include "engine/particle_storage.hpp"
+#include "engine/sparse_grid.hpp"
+#include "engine/stability_guard.hpp"
+#include "kernels/backend/schedule.hpp"
+#include "kernels/block_window.hpp"
+#include "kernels/boundary_conditions.hpp"
+#include "kernels/g2p.hpp"
+#include "kernels/grid_update.hpp"
+#include "kernels/p2g.hpp"
+#include "kernels/shape_functions.hpp"
+#include "kernels/transfer.hpp"
+
+namespace firn {
+
+struct SimulationConfig {
+  Point domain_min = {0, 0, 0};
+  Point domain_max = {1, 1, 1};
+  double dx = 0.01;
+  Point gravity = {0, -9.81, 0};
+  double cfl = 0.4;        // dt = cfl dx / max_p(c_p + |v_p|)
+  double dt_max = 1e-3;    // cap on the adaptive step
+  double fixed_dt = 0;     // when > 0, every step uses it (benchmarks, convergence studies)
+  Transfer transfer = Transfer::apic;
+  double flip_alpha = 0.95;
+  Shape shape = Shape::quadratic;
+  // Faces -x, +x, -y, +y, -z, +z: by default separating frictionless walls 3 cells thick.
+  std::array<Wall<double>, 6> walls = {{{WallType::separate, 3, 0}, {WallType::separate, 3, 0},
+                                        {WallType::separate, 3, 0}, {WallType::separate, 3, 0},
+                                        {WallType::separate, 3, 0}, {WallType::separate, 3, 0}}};
+};
+
+struct Diagnostics {
+  double kinetic_energy = 0;  // sum 1/2 m |v|^2 (J)
+  double elastic_energy = 0;  // sum V0 W(F) (J)
+  double momentum[3] = {0, 0, 0};
+  double max_speed = 0;
+  double min_J = 0;
+};
+
+template <class T, class Backend>
+class Simulation {
+ public:
+  explicit Simulation(const SimulationConfig& config, Backend backend = Backend{})
+      : config_(config), backend_(backend) {
+    if (!(config.dx > 0)) throw std::invalid_argument("dx must be positive");
+    GridGeometry<T> g{};
+    for (int d = 0; d < 3; ++d) {
+      if (!(config.domain_max[d] > config.domain_min[d])) throw std::invalid_argument("empty domain");
+      g.origin[d] = T(config.domain_min[d]);
+      g.nodes[d] = int(std::lround((config.domain_max[d] - config.domain_min[d]) / config.dx)) + 1;
+    }
+    g.dx = T(config.dx);
+    g.inv_dx = T(1 / config.dx);
+    const int channels = config.transfer == Transfer::flip ? GridChannels<Transfer::flip>::kCount
+                                                           : GridChannels<Transfer::apic>::kCount;
+    grid_.configure(g, channels);
+  }
+
+  int add_material(const MaterialInfo& info) {
+    materials_.push_back({info, make_material_model<T>(info.model, info.moduli), {0, 0}});
+    return int(materials_.size()) - 1;
+  }
+
+  // Adds particles of one material at rest in F = I, each of rest volume `volume`.
+  void add_particles(int material, const std::vector<Point>& positions, const Point& velocity, double volume) {
+    if (material < 0 || material >= int(materials_.size())) throw std::invalid_argument("unknown material index");
+    const std::size_t n0 = storage_.size();
+    if (prepared_)  // particles already grouped: restate their materials before staging more
+      for (std::size_t m = 0; m < materials_.size(); ++m)
+        staged_material_.insert(staged_material_.end(), materials_[m].range.end - materials_[m].range.begin, int(m));
+    storage_.resize(n0 + positions.size());
+    ParticleView<T> pv = storage_.view();
+    const T mass = T(materials_[material].info.density * volume);
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      const std::size_t p = n0 + i;
+      for (int d = 0; d < 3; ++d) {
+        pv.x[d][p] = T(positions[i][d]);
+        pv.v[d][p] = T(velocity[d]);
+        if (pv.x0[d]) pv.x0[d][p] = T(positions[i][d]);
+      }
+      for (int q = 0; q < 9; ++q) pv.F[q][p] = T(q % 4 == 0);
+      pv.mass[p] = mass;
+      pv.vol0[p] = T(volume);
+      pv.id[p] = std::uint32_t(p);
+    }
+    staged_material_.insert(staged_material_.end(), positions.size(), material);
+    prepared_ = false;
+  }
+
+  // Allocates an on_demand attribute (zero-filled; x0 is filled with the current positions).
+  void enable(Attribute a) {
+    if (storage_.has(a)) return;
+    storage_.enable(a);
+    if (a == Attribute::x0) {
+      ParticleView<T> pv = storage_.view();
+      for (int d = 0; d < 3; ++d)
+        for (std::size_t p = 0; p < pv.n; ++p) pv.x0[d][p] = pv.x[d][p];
+    }
+  }
+
+  // Groups particles by material (stable) and computes the initial stress and speeds. Called by
+  // the first step; call it yourself to read particles in their final layout before stepping.
+  void prepare() {
+    if (prepared_) return;
+    std::vector<std::uint32_t> order;
+    order.reserve(storage_.size());
+    for (std::size_t m = 0; m < materials_.size(); ++m) {
+      materials_[m].range.begin = order.size();
+      for (std::size_t p = 0; p < staged_material_.size(); ++p)
+        if (staged_material_[p] == int(m)) order.push_back(std::uint32_t(p));
+      materials_[m].range.end = order.size();
+    }
+    staged_material_.clear();
+    storage_.permute(order.data(), backend_);
+    max_speed_ = T(diagnostics().max_speed);
+    prepared_ = true;
+  }
+
+  // The next adaptive (or fixed) time step.
+  double next_dt() const {
+    if (config_.fixed_dt > 0) return config_.fixed_dt;
+    double c = 0;
+    for (const auto& m : materials_)
+      if (m.range.end > m.range.begin) c = std::max(c, m.info.wave_speed());
+    const double dt = config_.cfl * config_.dx / (c + double(max_speed_));
+    return std::min(dt, config_.dt_max);
+  }
+
+  void step() { step(next_dt()); }
+
+  void step(double dt) {
+    prepare();
+    const bool quadratic = config_.shape == Shape::quadratic;
+    switch (config_.transfer) {
+      case Transfer::apic:
+        quadratic ? step_impl<QuadraticBSpline<T>, Transfer::apic>(T(dt)) : step_impl<CubicBSpline<T>, Transfer::apic>(T(dt));
+        break;
+      case Transfer::pic:
+        quadratic ? step_impl<QuadraticBSpline<T>, Transfer::pic>(T(dt)) : step_impl<CubicBSpline<T>, Transfer::pic>(T(dt));
+        break;
+      case Transfer::flip:
+        quadratic ? step_impl<QuadraticBSpline<T>, Transfer::flip>(T(dt)) : step_impl<CubicBSpline<T>, Transfer::flip>(T(dt));
+        break;
+    }
+    time_ += dt;
+    last_dt_ = dt;
+    ++steps_;
+  }
+
+  // Steps until `time`, shortening the last step to land on it exactly.
+  void advance_to(double time) {
+    while (time_ < time * (1 - 1e-12)) step(std::min(next_dt(), time - time_));
+  }
+
+  Diagnostics diagnostics() {
+    struct Sums {
+      double ke = 0, p[3] = {0, 0, 0}, max_speed = 0, min_J = std::numeric_limits<double>::max();
+    };
+    const ParticleView<T> pv = storage_.view();
+    const Sums s = backend_.parallel_reduce(
+        "diagnostics.motion", pv.n, Sums{},
+        [=](std::size_t p, Sums& acc) {
+          const double m = pv.mass[p], v[3] = {pv.v[0][p], pv.v[1][p], pv.v[2][p]};
+          const double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+          acc.ke += 0.5 * m * v2;
+          for (int d = 0; d < 3; ++d) acc.p[d] += m * v[d];
+          acc.max_speed = std::max(acc.max_speed, std::sqrt(v2));
+          acc.min_J = std::min(acc.min_J, double(determinant(load_F(pv, p))));
+        },
+        [](Sums& a, const Sums& b) {
+          a.ke += b.ke;
+          for (int d = 0; d < 3; ++d) a.p[d] += b.p[d];
+          a.max_speed = std::max(a.max_speed, b.max_speed);
+          a.min_J = std::min(a.min_J, b.min_J);
+        });
+    Diagnostics out;
+    out.kinetic_energy = s.ke;
+    for (int d = 0; d < 3; ++d) out.momentum[d] = s.p[d];
+    out.max_speed = s.max_speed;
+    out.min_J = pv.n ? s.min_J : 1.0;
+    for (const auto& m : materials_) {
+      const std::size_t begin = m.range.begin;
+      std::visit(
+          [&](const auto& model) {
+            out.elastic_energy += backend_.parallel_reduce(
+                "diagnostics.elastic_energy", m.range.end - begin, 0.0,
+                [=](std::size_t i, double& acc) {
+                  const std::size_t p = begin + i;
+                  acc += double(pv.vol0[p]) * double(model.energy_density(load_F(pv, p)));
+                },
+                [](double& a, double b) { a += b; });
+          },
+          m.model);
+    }
+    return out;
+  }
+
+  // FNV-1a over every particle's position and velocity bits, in particle id order: equal states
+  // give equal hashes whatever the memory layout.
+  std::uint64_t state_hash() {
+    const ParticleView<T> pv = storage_.view();
+    std::vector<std::uint32_t> by_id(pv.n);
+    for (std::size_t p = 0; p < pv.n; ++p) by_id[pv.id[p]] = std::uint32_t(p);
+    std::uint64_t h = 1469598103934665603ull;
+    auto mix = [&h](T value) {
+      unsigned char bytes[sizeof(T)];
+      std::memcpy(bytes, &value, sizeof(T));
+      for (unsigned char b : bytes) h = (h ^ b) * 1099511628211ull;
+    };
+    for (std::uint32_t p : by_id)
+      for (int d = 0; d < 3; ++d) {
+        mix(pv.x[d][p]);
+        mix(pv.v[d][p]);
+      }
+    return h;
+  }
+
+  ParticleView<T> particles() { return storage_.view(); }
+  std::size_t particle_count() const { return storage_.size(); }
+  double time() const { return time_; }
+  long steps() const { return steps_; }
+  double last_dt() const { return last_dt_; }
+  const SimulationConfig& config() const { return config_; }
+  const Backend& backend() const { return backend_; }
+  Backend& backend() { return backend_; }
+  const SparseGrid<T>& grid() const { return grid_; }
+  const MaterialInfo& material(int m) const { return materials_[m].info; }
+  std::size_t material_count() const { return materials_.size(); }
+  // Material index of the particle at physical index p (valid after prepare()).
+  int material_of(std::size_t p) const {
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+      if (p < materials_[m].range.end) return int(m);
+    return -1;
+  }
+  ParticleRange material_range(int m) const { return materials_[m].range; }
+
+ private:
+  struct Material {
+    MaterialInfo info;
+    MaterialModel<T> model;
+    ParticleRange range;
+  };
+
+  static Mat3<T> load_F(const ParticleView<T>& pv, std::size_t p) {
+    Mat3<T> F;
+    for (int q = 0; q < 9; ++q) F.m[q] = pv.F[q][p];
+    return F;
+  }
+
+  std::vector<ParticleRange> ranges() const {
+    std::vector<ParticleRange> r;
+    for (const auto& m : materials_) r.push_back(m.range);
+    return r;
+  }
+
+  template <class ShapeT, Transfer kTransfer>
+  void step_impl(T dt) {
+    constexpr int kSpan = kBlockSize + ShapeT::kSupport - 1;
+    using Ch = GridChannels<kTransfer>;
+    const GridGeometry<T> g = grid_.geometry();
+
+    // 1. Bin particles by block; reorder the arrays when the walk has become scattered.
+    const std::size_t outside = binning_.compute_keys<ShapeT>(storage_.view(), ranges(), g, grid_.blocks(), backend_);
+    if (outside != ParticleBinning::kNone) {
+      GuardSummary<T> s;
+      s.offender = outside;
+      s.reason = GuardReason::left_grid;
+      fail(s, dt);
+    }
+    binning_.sort(grid_.blocks(), backend_);
+    if (binning_.needs_reorder(backend_)) {
+      storage_.permute(binning_.order(), backend_);
+      binning_.reordered(backend_);
+    }
+    grid_.activate(binning_.particle_blocks(), backend_);
+    const ParticleView<T> pv = storage_.view();
+
+    // 2. Kirchhoff stress, one launch per material range; a non-finite stress (where NaNs are
+    //    born) names its particle before P2G spreads it to the neighbours.
+    std::size_t bad_stress = ParticleBinning::kNone;
+    for (const auto& m : materials_) {
+      const std::size_t begin = m.range.begin;
+      std::visit(
+          [&](const auto& model) {
+            const std::size_t bad = backend_.parallel_reduce(
+                stress_launch_name(model), m.range.end - begin, ParticleBinning::kNone,
+                [=](std::size_t i, std::size_t& first) {
+                  const std::size_t p = begin + i;
+                  const Mat3<T> tau = model.kirchhoff(load_F(pv, p));
+                  pv.tau[0][p] = tau(0, 0);
+                  pv.tau[1][p] = tau(1, 1);
+                  pv.tau[2][p] = tau(2, 2);
+                  pv.tau[3][p] = tau(0, 1);
+                  pv.tau[4][p] = tau(1, 2);
+                  pv.tau[5][p] = tau(2, 0);
+                  if (!std::isfinite(tau(0, 0) + tau(1, 1) + tau(2, 2) + tau(0, 1) + tau(1, 2) + tau(2, 0)) && p < first)
+                    first = p;
+                },
+                [](std::size_t& a, std::size_t b) { a = b < a ? b : a; });
+            bad_stress = std::min(bad_stress, bad);
+          },
+          m.model);
+    }
+    if (bad_stress != ParticleBinning::kNone) {
+      GuardSummary<T> s;
+      s.offender = bad_stress;
+      s.reason = determinant(load_F(pv, bad_stress)) <= T(0) ? GuardReason::inverted : GuardReason::not_finite;
+      fail(s, dt);
+    }
+
+    // 3. P2G: each block accumulates into an L1-sized scratch, flushed colour by colour.
+    const SparseGridView<T> gv = grid_.view();
+    const ParticleBinning& bins = binning_;
+    const std::uint32_t* order = bins.order();
+    const int* nb = grid_.blocks();
+    const int by_count = nb[1], bz_count = nb[2];
+    backend_.scatter_blocks("p2g", bins.colouring(), [&, pv, gv, g, dt, order](std::uint32_t b) {
+      BlockScratch<T, kSpan, Ch::kCount> scratch;
+      scratch.reset(int(b) / (by_count * bz_count), (int(b) / bz_count) % by_count, int(b) % bz_count);
+      for (std::size_t m = 0; m < bins.material_count(); ++m)
+        for (std::uint32_t s = bins.bucket_begin(m, b), e = bins.bucket_end(m, b); s < e; ++s)
+          p2g_particle<T, ShapeT, kTransfer>(pv, order[s], g, dt, scratch);
+      scratch.flush(gv);
+    });
+
+    // 4. Grid update.
+    GridUpdateParams<T> up{};
+    up.dt = dt;
+    for (int d = 0; d < 3; ++d) {
+      up.gravity[d] = T(config_.gravity[d]);
+      up.nodes[d] = g.nodes[d];
+    }
+    for (int f = 0; f < 6; ++f)
+      up.walls[f] = Wall<T>{config_.walls[f].type, config_.walls[f].width, T(config_.walls[f].friction)};
+    SparseGrid<T>& grid = grid_;
+    backend_.parallel_for("grid_update", grid_.active_count(), [&grid, up](std::size_t s) {
+      grid_update_block<T, kTransfer>(grid.slot_data(s), grid.slot_coords(s), up);
+    });
+
+    // 5. G2P with the stability guard, block by block; summaries combined in block order.
+    const std::vector<std::uint32_t>& blocks = bins.particle_blocks();
+    checks_.assign(blocks.size(), GuardSummary<T>{});
+    GuardSummary<T>* checks = checks_.data();
+    const T alpha = T(config_.flip_alpha);
+    constexpr int kG2PChannels = kTransfer == Transfer::flip ? 6 : 3;
+    backend_.parallel_for(
+        "g2p", blocks.size(),
+        [&, pv, gv, g, dt, order, checks, alpha](std::size_t i) {
+          const std::uint32_t b = blocks[i];
+          BlockGather<T, kSpan, kG2PChannels> window;
+          window.load(gv, Ch::kVelocity, int(b) / (by_count * bz_count), (int(b) / bz_count) % by_count,
+                      int(b) % bz_count);
+          GuardSummary<T> summary;
+          for (std::size_t m = 0; m < bins.material_count(); ++m)
+            for (std::uint32_t s = bins.bucket_begin(m, b), e = bins.bucket_end(m, b); s < e; ++s) {
+              const std::size_t p = order[s];
+              const ParticleCheck<T> c = g2p_particle<T, ShapeT, kTransfer>(pv, p, g, dt, alpha, window);
+              summary.add(p, c.speed, c.J, c.moved, g.dx);
+            }
+          checks[i] = summary;
+        },
+        backend::Schedule::uneven);
+    GuardSummary<T> total;
+    for (const auto& c : checks_) total.merge(c);
+    if (total.reason != GuardReason::none) fail(total, dt);
+    max_speed_ = total.max_speed;
+  }
+
+  template <class Model>
+  static const char* stress_launch_name(const Model&) {
+    if constexpr (std::is_same_v<Model, NeoHookean<T>>) return "stress.neo_hookean";
+    else return "stress.fixed_corotated";
+  }
+
+  [[noreturn]] void fail(const GuardSummary<T>& s, T dt) {
+    const ParticleView<T> pv = storage_.view();
+    const std::size_t p = s.offender;
+    std::ostringstream msg;
+    msg.precision(6);
+    msg << "stability guard: step " << steps_ << ", t = " << time_ << " s, dt = " << dt << " s: particle "
+        << pv.id[p] << " (material '" << materials_[material_of(p)].info.name << "') "
+        << guard_reason_text(s.reason) << ": x = (" << pv.x[0][p] << ", " << pv.x[1][p] << ", " << pv.x[2][p]
+        << "), v = (" << pv.v[0][p] << ", " << pv.v[1][p] << ", " << pv.v[2][p]
+        << "), J = " << determinant(load_F(pv, p));
+    if (s.reason == GuardReason::too_fast) msg << ", moved " << s.moved << " m > dx = " << config_.dx << " m";
+    throw StabilityError(msg.str());
+  }
+
+  SimulationConfig config_;
+  Backend backend_;
+  ParticleStorage<T> storage_;
+  std::vector<Material> materials_;
+  std::vector<int> staged_material_;  // material of each particle added since the last prepare()
+  SparseGrid<T> grid_;
+  ParticleBinning binning_;
+  std::vector<GuardSummary<T>> checks_;
+  T max_speed_ = T(0);
+  double time_ = 0, last_dt_ = 0;
+  long steps_ = 0;
+  bool prepared_ = false;
+};
+
+}  // namespace firn

@@ -1,0 +1,47 @@
+// Known-answer problems (DESIGN.md section 6), shared by `firn verify` and the test suite. Each
+// problem runs at one or more levels and reports an error against its stated bound, in double
+// precision on the OpenMP backend.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace firn {
+
+struct VerificationRow {
+  std::string problem;
+  int level;
+  double dx;
+  int particles_per_cell;  // per axis
+  long steps;
+  double error;
+  double bound;
+  double seconds;
+  bool passed() const { return error <= bound; }  // false for NaN
+};
+
+struct VerificationOptions {
+  int threads = 0;             // 0: all cores
+  std::ostream* log = nullptr;  // histories (energy per transfer scheme, ...) go here
+};
+
+// Names of the problems, in the order `firn verify` runs them.
+std::vector<std::string> verification_problems();
+
+// Runs one problem; throws std::invalid_argument for an unknown name.
+std::vector<VerificationRow> run_verification(const std::string& problem, const VerificationOptions& options);
+
+// Axially vibrating bar (Bardenhagen 2002; Tielen et al. 2017): error of the free end's
+// displacement against v0/w sin(wt) sin(beta x), relative to the amplitude, over one period.
+std::vector<VerificationRow> verify_vibrating_bar(const VerificationOptions& options);
+
+// Manufactured solution (Wallstedt and Guilkey 2008): RMS displacement error per level, and the
+// observed convergence order as a row whose error is the shortfall from second order.
+std::vector<VerificationRow> verify_manufactured_solution(const VerificationOptions& options);
+
+// Two elastic spheres colliding (Sulsky et al. 1994, in 3D): relative drift of total momentum per
+// transfer scheme; the energy history goes to the log.
+std::vector<VerificationRow> verify_two_spheres(const VerificationOptions& options);
+
+}  // namespace firn

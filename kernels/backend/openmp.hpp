@@ -1,0 +1,68 @@
+// The OpenMP backend: same API as backend::Serial. Results are bitwise identical to the serial
+// backend for any thread count: parallel_for writes disjoint items, reductions use the fixed
+// chunking of reduce_chunks.hpp, and the scatter runs same-colour blocks (which never share a
+// node) concurrently, colour after colour.
+#pragma once
+
+#include <omp.h>
+
+#include <cstddef>
+#include <vector>
+
+#include "kernels/backend/block_colouring.hpp"
+#include "kernels/backend/launch_profile.hpp"
+#include "kernels/backend/reduce_chunks.hpp"
+#include "kernels/backend/schedule.hpp"
+
+namespace firn::backend {
+
+struct OpenMP {
+  static constexpr const char* kName = "openmp";
+  // Launches with fewer items run on the calling thread: waking the team costs more than they do.
+  static constexpr long kMinParallelItems = 4096;
+  static constexpr long kMinParallelBlocks = 64;
+  int thread_count = omp_get_max_threads();
+  LaunchProfile* profile = nullptr;
+
+  int threads() const { return thread_count; }
+
+  template <class F>
+  void parallel_for(const char* name, std::size_t n, F&& f, Schedule schedule = Schedule::uniform) const {
+    ScopedLaunch timer(profile, name);
+    const long count = static_cast<long>(n);
+    if (schedule == Schedule::uniform) {
+#pragma omp parallel for num_threads(thread_count) schedule(static) if (count >= kMinParallelItems)
+      for (long i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
+    } else {
+#pragma omp parallel for num_threads(thread_count) schedule(dynamic, 1) if (count >= kMinParallelBlocks)
+      for (long i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
+    }
+  }
+
+  template <class R, class F, class Combine>
+  R parallel_reduce(const char* name, std::size_t n, R init, F&& f, Combine&& combine) const {
+    ScopedLaunch timer(profile, name);
+    const long chunks = static_cast<long>(reduce_chunk_count(n));
+    std::vector<R> partial(static_cast<std::size_t>(chunks), init);
+#pragma omp parallel for num_threads(thread_count) schedule(static) if (chunks > 1)
+    for (long c = 0; c < chunks; ++c) reduce_chunk(static_cast<std::size_t>(c), n, partial[c], f);
+    R result = init;
+    for (const R& p : partial) combine(result, p);
+    return result;
+  }
+
+  template <class F>
+  void scatter_blocks(const char* name, const BlockColouring& colouring, F&& f) const {
+    ScopedLaunch timer(profile, name);
+    const bool parallel = static_cast<long>(colouring.begin[BlockColouring::kColours]) >= kMinParallelBlocks;
+#pragma omp parallel num_threads(thread_count) if (parallel)
+    for (int c = 0; c < BlockColouring::kColours; ++c) {
+      const long begin = static_cast<long>(colouring.begin[c]), end = static_cast<long>(colouring.begin[c + 1]);
+      // The implicit barrier at the end of each loop separates the colours.
+#pragma omp for schedule(dynamic, 1)
+      for (long i = begin; i < end; ++i) f(colouring.blocks[i]);
+    }
+  }
+};
+
+}  // namespace firn::backend

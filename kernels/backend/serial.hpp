@@ -1,0 +1,50 @@
+// The serial reference backend: the same small API as the OpenMP backend (parallel_for,
+// parallel_reduce, scatter over coloured blocks), every launch named, run on one thread.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "kernels/backend/block_colouring.hpp"
+#include "kernels/backend/launch_profile.hpp"
+#include "kernels/backend/reduce_chunks.hpp"
+#include "kernels/backend/schedule.hpp"
+
+namespace firn::backend {
+
+struct Serial {
+  static constexpr const char* kName = "serial";
+  LaunchProfile* profile = nullptr;
+
+  int threads() const { return 1; }
+
+  template <class F>
+  void parallel_for(const char* name, std::size_t n, F&& f, Schedule = Schedule::uniform) const {
+    ScopedLaunch timer(profile, name);
+    for (std::size_t i = 0; i < n; ++i) f(i);
+  }
+
+  // f(i, acc) accumulates item i into acc; combine(acc, partial) merges; init must be the
+  // identity of combine. Deterministic: see reduce_chunks.hpp.
+  template <class R, class F, class Combine>
+  R parallel_reduce(const char* name, std::size_t n, R init, F&& f, Combine&& combine) const {
+    ScopedLaunch timer(profile, name);
+    R result = init;
+    for (std::size_t c = 0; c < reduce_chunk_count(n); ++c) {
+      R partial = init;
+      reduce_chunk(c, n, partial, f);
+      combine(result, partial);
+    }
+    return result;
+  }
+
+  // The P2G scatter strategy: f(block) for every block, colour after colour.
+  template <class F>
+  void scatter_blocks(const char* name, const BlockColouring& colouring, F&& f) const {
+    ScopedLaunch timer(profile, name);
+    for (int c = 0; c < BlockColouring::kColours; ++c)
+      for (std::size_t i = colouring.begin[c]; i < colouring.begin[c + 1]; ++i) f(colouring.blocks[i]);
+  }
+};
+
+}  // namespace firn::backend

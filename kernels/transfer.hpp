@@ -1,0 +1,24 @@
+// Particle-grid transfer schemes and the grid channels each one needs.
+//   apic: affine particle-in-cell / MLS-MPM (Jiang et al. 2015; Hu et al. 2018), the default;
+//   pic:  plain PIC, particle velocity = interpolated grid velocity (dissipative);
+//   flip: FLIP blended with PIC, v_p <- alpha (v_p + sum w (v_i - v_i_old)) + (1 - alpha) v_pic
+//         (Brackbill and Ruppel 1986; Stomakhin et al. 2013 use alpha = 0.95).
+// Forces use the MLS-MPM stress term in every scheme; the velocity gradient for the F update is
+// the MLS one, C = D^-1 sum w v_i (x_i - x_p)^T.
+#pragma once
+
+namespace firn {
+
+enum class Transfer { apic, pic, flip };
+
+// Grid node channels. After P2G: mass and momentum (including the stress impulse); FLIP also
+// carries the momentum without the impulse. The grid update turns momenta into velocities in place.
+template <Transfer kTransfer>
+struct GridChannels {
+  static constexpr int kMass = 0;
+  static constexpr int kVelocity = 1;     // 3 channels: momentum after P2G, velocity after update
+  static constexpr int kOldVelocity = 4;  // FLIP only, 3 channels
+  static constexpr int kCount = kTransfer == Transfer::flip ? 7 : 4;
+};
+
+}  // namespace firn

@@ -1,0 +1,99 @@
+// The stability guard stops a run on NaN/Inf, J <= 0, a particle moving more than one cell in a
+// step and a particle leaving the grid, naming step, particle and material.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "engine/simulation.hpp"
+#include "kernels/backend/serial.hpp"
+
+namespace firn {
+namespace {
+
+struct GuardCase {
+  SimulationConfig config;
+  Simulation<float, backend::Serial> sim{config};
+  int material;
+  GuardCase() {
+    material = sim.add_material({"snow", "neo_hookean", 400, ElasticModuli::from_E_nu(1.4e5, 0.2)});
+    sim.add_particles(material, fill_box(config.domain_min, config.dx, 2, {0.4, 0.4, 0.4}, {0.5, 0.5, 0.5}),
+                      {0, 0, 0}, 1e-7);
+    sim.prepare();
+  }
+  // Index of the particle with the given id.
+  std::size_t find(std::uint32_t id) {
+    const ParticleView<float> pv = sim.particles();
+    for (std::size_t p = 0; p < pv.n; ++p)
+      if (pv.id[p] == id) return p;
+    return 0;
+  }
+  std::string error_of_next_steps() {
+    try {
+      for (int s = 0; s < 3; ++s) sim.step();
+    } catch (const StabilityError& e) {
+      return e.what();
+    }
+    return "";
+  }
+};
+
+TEST(StabilityGuard, CatchesNaNVelocity) {
+  GuardCase c;
+  c.sim.step();
+  c.sim.particles().v[0][c.find(17)] = std::numeric_limits<float>::quiet_NaN();
+  // P2G spreads the NaN to the neighbours; the lowest-index victim is named.
+  const std::string msg = c.error_of_next_steps();
+  EXPECT_NE(msg.find("NaN"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("material 'snow'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("step 1,"), std::string::npos) << msg;
+}
+
+TEST(StabilityGuard, NamesTheParticleWhoseStressIsNaN) {
+  GuardCase c;
+  c.sim.particles().F[4][c.find(17)] = std::numeric_limits<float>::quiet_NaN();
+  const std::string msg = c.error_of_next_steps();
+  EXPECT_NE(msg.find("NaN"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("particle 17 "), std::string::npos) << msg;
+  EXPECT_NE(msg.find("step 0,"), std::string::npos) << msg;
+}
+
+TEST(StabilityGuard, CatchesInversion) {
+  GuardCase c;
+  ParticleView<float> pv = c.sim.particles();
+  const std::size_t p = c.find(5);
+  pv.F[0][p] = -1;  // det F = -1
+  const std::string msg = c.error_of_next_steps();
+  EXPECT_NE(msg.find("J <= 0"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("particle 5 "), std::string::npos) << msg;
+}
+
+TEST(StabilityGuard, CatchesTooLargeStep) {
+  GuardCase c;
+  const ParticleView<float> pv = c.sim.particles();
+  for (std::size_t p = 0; p < pv.n; ++p) pv.v[1][p] = 50;  // 50 m/s for 1 ms is 5 cells
+  std::string msg;
+  try {
+    c.sim.step(1e-3);
+  } catch (const StabilityError& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("more than one cell"), std::string::npos) << msg;
+}
+
+TEST(StabilityGuard, CatchesParticleLeavingTheGrid) {
+  GuardCase c;
+  c.sim.particles().x[2][c.find(3)] = 7.0f;  // far outside the unit domain
+  const std::string msg = c.error_of_next_steps();
+  EXPECT_NE(msg.find("left the grid"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("particle 3 "), std::string::npos) << msg;
+}
+
+TEST(StabilityGuard, QuietOnAHealthyRun) {
+  GuardCase c;
+  EXPECT_EQ(c.error_of_next_steps(), "");
+}
+
+}  // namespace
+}  // namespace firn
