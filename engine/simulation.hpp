@@ -373,12 +373,11 @@ class Simulation {
     checks_.assign(blocks.size(), GuardSummary<T>{});
     GuardSummary<T>* checks = checks_.data();
     const T alpha = T(config_.flip_alpha);
-    constexpr int kG2PChannels = kTransfer == Transfer::flip ? 6 : 3;
     backend_.parallel_for(
         "g2p", blocks.size(),
         [&, pv, gv, g, dt, order, checks, alpha](std::size_t i) {
           const std::uint32_t b = blocks[i];
-          BlockGather<T, kSpan, kG2PChannels> window;
+          BlockGather<T, kSpan, Ch::kGatherCount> window;
           window.load(gv, Ch::kVelocity, int(b) / (by_count * bz_count), (int(b) / bz_count) % by_count,
                       int(b) % bz_count);
           GuardSummary<T> summary;

@@ -58,7 +58,8 @@ struct BlockScratch {
   }
 };
 
-// Dense copy of grid channels [first, first + kChannels) over a block's window.
+// Dense copy of grid channels [first, first + kChannels) over a block's window; lanes past the
+// grid's last channel read as zero.
 template <class T, int kSpan, int kChannels>
 struct BlockGather {
   int origin[3];
@@ -76,7 +77,8 @@ struct BlockGather {
           const T* blk = grid.block(gi >> kBlockShift, gj >> kBlockShift, gk >> kBlockShift);
           const int l = local_node(gi & (kBlockSize - 1), gj & (kBlockSize - 1), gk & (kBlockSize - 1));
           T* v = values + ((a * kSpan + b) * kSpan + c) * kChannels;
-          for (int ch = 0; ch < kChannels; ++ch) v[ch] = blk[(first + ch) * kBlockNodes + l];
+          for (int ch = 0; ch < kChannels; ++ch)
+            v[ch] = first + ch < grid.channels ? blk[(first + ch) * kBlockNodes + l] : T(0);
         }
       }
   }

@@ -3,7 +3,7 @@
 //   F <- (I + dt C) F,     x <- x + dt v_pic                     (Hu et al. 2018, Eq. 17)
 //   v_p = v_pic (APIC, PIC) or alpha (v_p + v_pic - v_old) + (1 - alpha) v_pic (FLIP),
 // where v_old = sum w_ip v_i_old. Reads grid velocities from Source::node(i, j, k), which returns
-// the node's velocity channels (3, then 3 old-velocity channels for FLIP).
+// GridChannels::kGatherCount values: velocity and a zero pad, then for FLIP the old velocity and a pad.
 // Returns what the stability guard needs: the new speed, J = det F and the distance moved.
 #pragma once
 
@@ -38,25 +38,36 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
     ShapeT::weights(f[d], w[d]);
   }
 
-  // Accumulate v = sum w v_i, Bo = sum w v_i o^T (o the node offset) and, for FLIP, v_old.
-  T vp[3] = {T(0), T(0), T(0)}, vold[3] = {T(0), T(0), T(0)};
-  T Bo[9] = {T(0), T(0), T(0), T(0), T(0), T(0), T(0), T(0), T(0)};
+  // Accumulate sum w v_i and its first moments sum w v_i o_k (o the node offset), four lanes per
+  // node (velocity and a zero pad) so that every update is one short vector operation; the sums
+  // over the innermost axis are taken first. FLIP also accumulates v_old = sum w v_i_old.
+  T vp[4] = {T(0), T(0), T(0), T(0)}, mo[3][4] = {}, vold[4] = {T(0), T(0), T(0), T(0)};
   for (int a = 0; a < S; ++a)
     for (int b = 0; b < S; ++b) {
-      const T wab = w[0][a] * w[1][b];
+      T sv[4] = {T(0), T(0), T(0), T(0)}, sc[4] = {T(0), T(0), T(0), T(0)}, so[4] = {T(0), T(0), T(0), T(0)};
       for (int c = 0; c < S; ++c) {
-        const T wt = wab * w[2][c];
         const T* node = grid.node(base[0] + a, base[1] + b, base[2] + c);
-        const T o[3] = {T(a), T(b), T(c)};
-        for (int r = 0; r < 3; ++r) {
-          const T wv = wt * node[r];
-          vp[r] += wv;
-          for (int k = 0; k < 3; ++k) Bo[3 * r + k] += wv * o[k];
+        const T wc = w[2][c], wcc = w[2][c] * T(c);
+        for (int r = 0; r < 4; ++r) {
+          sv[r] += wc * node[r];
+          sc[r] += wcc * node[r];
         }
         if (kTransfer == Transfer::flip)
-          for (int r = 0; r < 3; ++r) vold[r] += wt * node[3 + r];
+          for (int r = 0; r < 4; ++r) so[r] += wc * node[4 + r];
       }
+      const T wab = w[0][a] * w[1][b], wa = wab * T(a), wb = wab * T(b);
+      for (int r = 0; r < 4; ++r) {
+        vp[r] += wab * sv[r];
+        mo[0][r] += wa * sv[r];
+        mo[1][r] += wb * sv[r];
+        mo[2][r] += wab * sc[r];
+      }
+      if (kTransfer == Transfer::flip)
+        for (int r = 0; r < 4; ++r) vold[r] += wab * so[r];
     }
+  T Bo[9];
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) Bo[3 * r + k] = mo[k][r];
 
   // x_i - x_p = (o - f) dx, so C = D^-1 dx (Bo - v f^T) = kDinv / dx (Bo - v f^T).
   const T cs = ShapeT::kDinv * g.inv_dx;

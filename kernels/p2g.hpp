@@ -43,27 +43,33 @@ FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGe
   if (kTransfer == Transfer::apic)
     for (int q = 0; q < 9; ++q) A[q] += m * pv.C[q][p];
 
-  // With node offset o = (a, b, c) from base, x_i - x_p = (o - f) dx, so the momentum
-  // contribution is w (q + Ad o) with Ad = A dx and q = m vb - Ad f: three adds per node.
+  // With node offset o = (a, b, c) from base, x_i - x_p = (o - f) dx, so the node receives
+  // w (m, q + Ad o) with Ad = A dx and q = m vb - Ad f. Four lanes (mass, momentum) per node:
+  // u = (m, q) + a col0 + b col1 + c col2, with col_k = (0, Ad column k).
   T Ad[9];
   for (int q = 0; q < 9; ++q) Ad[q] = A[q] * g.dx;
-  T q0[3];
-  for (int r = 0; r < 3; ++r) q0[r] = m * vb[r] - (Ad[3 * r] * f[0] + Ad[3 * r + 1] * f[1] + Ad[3 * r + 2] * f[2]);
+  T u0[4] = {m, T(0), T(0), T(0)}, col[3][4];
+  for (int r = 0; r < 3; ++r)
+    u0[1 + r] = m * vb[r] - (Ad[3 * r] * f[0] + Ad[3 * r + 1] * f[1] + Ad[3 * r + 2] * f[2]);
+  for (int k = 0; k < 3; ++k) {
+    col[k][0] = T(0);
+    for (int r = 0; r < 3; ++r) col[k][1 + r] = Ad[3 * r + k];
+  }
+  const T mv[4] = {T(0), m * v[0], m * v[1], m * v[2]};  // FLIP: momentum without the impulse
 
   for (int a = 0; a < S; ++a) {
-    T qa[3];
-    for (int r = 0; r < 3; ++r) qa[r] = q0[r] + T(a) * Ad[3 * r];
+    T ua[4];
+    for (int r = 0; r < 4; ++r) ua[r] = u0[r] + T(a) * col[0][r];
     for (int b = 0; b < S; ++b) {
-      T qab[3];
-      for (int r = 0; r < 3; ++r) qab[r] = qa[r] + T(b) * Ad[3 * r + 1];
+      T uab[4];
+      for (int r = 0; r < 4; ++r) uab[r] = ua[r] + T(b) * col[1][r];
       const T wab = w[0][a] * w[1][b];
       for (int c = 0; c < S; ++c) {
         const T wt = wab * w[2][c];
         T val[Ch::kCount];
-        val[Ch::kMass] = wt * m;
-        for (int r = 0; r < 3; ++r) val[Ch::kVelocity + r] = wt * (qab[r] + T(c) * Ad[3 * r + 2]);
+        for (int r = 0; r < 4; ++r) val[r] = wt * (uab[r] + T(c) * col[2][r]);
         if (kTransfer == Transfer::flip)
-          for (int r = 0; r < 3; ++r) val[Ch::kOldVelocity + r] = wt * m * v[r];
+          for (int r = 0; r < 4; ++r) val[4 + r] = wt * mv[r];
         out.add(base[0] + a, base[1] + b, base[2] + c, val);
       }
     }

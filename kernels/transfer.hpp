@@ -13,12 +13,15 @@ enum class Transfer { apic, pic, flip };
 
 // Grid node channels. After P2G: mass and momentum (including the stress impulse); FLIP also
 // carries the momentum without the impulse. The grid update turns momenta into velocities in place.
+// Groups of four lanes, so that kernels update a node with short vector operations.
 template <Transfer kTransfer>
 struct GridChannels {
   static constexpr int kMass = 0;
   static constexpr int kVelocity = 1;     // 3 channels: momentum after P2G, velocity after update
-  static constexpr int kOldVelocity = 4;  // FLIP only, 3 channels
-  static constexpr int kCount = kTransfer == Transfer::flip ? 7 : 4;
+  static constexpr int kOldVelocity = 5;  // FLIP only, 3 channels after a pad
+  static constexpr int kCount = kTransfer == Transfer::flip ? 8 : 4;
+  // What G2P reads per node: velocity and a zero pad (and the old velocity and a pad for FLIP).
+  static constexpr int kGatherCount = kTransfer == Transfer::flip ? 8 : 4;
 };
 
 }  // namespace firn

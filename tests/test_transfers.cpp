@@ -63,12 +63,11 @@ struct AffineField {  // v(x) = a + B x at every node (and old velocity = 0)
   GridGeometry<double> g;
   double a[3] = {0.5, -0.25, 1.0};
   double B[9] = {0.1, -0.2, 0.3, 0.05, 0.4, -0.1, -0.3, 0.2, 0.15};
-  mutable double node_value[6] = {0, 0, 0, 0, 0, 0};
+  mutable double node_value[8] = {0, 0, 0, 0, 0, 0, 0, 0};  // velocity, pad, old velocity, pad
   const double* node(int i, int j, int k) const {
     const double x[3] = {i * g.dx, j * g.dx, k * g.dx};
     for (int r = 0; r < 3; ++r) {
       node_value[r] = a[r] + B[3 * r] * x[0] + B[3 * r + 1] * x[1] + B[3 * r + 2] * x[2];
-      node_value[3 + r] = 0;
     }
     return node_value;
   }
@@ -97,7 +96,7 @@ TEST(G2P, ReproducesAffineFieldCubic) { check_g2p_affine<CubicBSpline<double>>()
 TEST(G2P, FlipBlend) {
   // Grid velocity uniform u, old grid velocity 0: FLIP gives alpha (v_p + u) + (1 - alpha) u.
   struct Uniform {
-    double value[6] = {1, 2, 3, 0, 0, 0};
+    double value[8] = {1, 2, 3, 0, 0, 0, 0, 0};
     const double* node(int, int, int) const { return value; }
   } grid;
   ParticleStorage<double> s;
