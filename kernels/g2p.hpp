@@ -14,6 +14,7 @@
 #include "kernels/hd.hpp"
 #include "kernels/mat3.hpp"
 #include "kernels/particle_attributes.hpp"
+#include "kernels/stencil.hpp"
 #include "kernels/transfer.hpp"
 
 namespace firn {
@@ -29,14 +30,10 @@ template <class T, class ShapeT, Transfer kTransfer, class Source>
 FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, const GridGeometry<T>& g, T dt,
                                       T flip_alpha, const Source& grid) {
   constexpr int S = ShapeT::kSupport;
-  int base[3];
-  T f[3], w[3][S];
-  for (int d = 0; d < 3; ++d) {
-    const T X = (pv.x[d][p] - g.origin[d]) * g.inv_dx;
-    base[d] = ShapeT::base(X);
-    f[d] = X - T(base[d]);
-    ShapeT::weights(f[d], w[d]);
-  }
+  const Stencil<T, ShapeT> st = particle_stencil<T, ShapeT>(pv, p, g);
+  const int* base = st.base;
+  const T* f = st.f;
+  const auto& w = st.w;
 
   // Accumulate sum w v_i and its first moments sum w v_i o_k (o the node offset), four lanes per
   // node (velocity and a zero pad) so that every update is one short vector operation; the sums

@@ -13,6 +13,7 @@
 #include "kernels/grid_geometry.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/particle_attributes.hpp"
+#include "kernels/stencil.hpp"
 #include "kernels/transfer.hpp"
 
 namespace firn {
@@ -21,14 +22,10 @@ template <class T, class ShapeT, Transfer kTransfer, class Target>
 FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGeometry<T>& g, T dt, Target& out) {
   constexpr int S = ShapeT::kSupport;
   using Ch = GridChannels<kTransfer>;
-  int base[3];
-  T f[3], w[3][S];
-  for (int d = 0; d < 3; ++d) {
-    const T X = (pv.x[d][p] - g.origin[d]) * g.inv_dx;
-    base[d] = ShapeT::base(X);
-    f[d] = X - T(base[d]);
-    ShapeT::weights(f[d], w[d]);
-  }
+  const Stencil<T, ShapeT> st = particle_stencil<T, ShapeT>(pv, p, g);
+  const int* base = st.base;
+  const T* f = st.f;
+  const auto& w = st.w;
   const T m = pv.mass[p];
   const T v[3] = {pv.v[0][p], pv.v[1][p], pv.v[2][p]};
   T vb[3] = {v[0], v[1], v[2]};  // velocity after the body force impulse
