@@ -17,7 +17,6 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -129,7 +128,7 @@ class Simulation {
     }
   }
 
-  // Groups particles by material (stable) and computes the initial stress and speeds. Called by
+  // Groups particles by material (stable) and measures the initial speed for the time step. Called by
   // the first step; call it yourself to read particles in their final layout before stepping.
   void prepare() {
     if (prepared_) return;
@@ -263,7 +262,6 @@ class Simulation {
       if (p < materials_[m].range.end) return int(m);
     return -1;
   }
-  ParticleRange material_range(int m) const { return materials_[m].range; }
 
  private:
   struct Material {
