@@ -22,6 +22,9 @@ struct GridChannels {
   static constexpr int kCount = kTransfer == Transfer::flip ? 8 : 4;
   // What G2P reads per node: velocity and a zero pad (and the old velocity and a pad for FLIP).
   static constexpr int kGatherCount = kTransfer == Transfer::flip ? 8 : 4;
+  // P2G writes lanes 0-3 as (mass, momentum) and lanes 4-7 as (pad, old momentum); G2P reads
+  // velocity from gather lanes 0-2 and old velocity from 4-6.
+  static_assert(kMass == 0 && kVelocity == 1 && kOldVelocity == 5, "kernels assume this four-lane layout");
 };
 
 }  // namespace firn
