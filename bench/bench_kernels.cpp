@@ -49,8 +49,8 @@ void BM_StepKernel(benchmark::State& state, const std::string& launch, const std
 
 void register_all() {
   const std::pair<const char*, const char*> kernels[] = {
-      {"bin.", "neo_hookean"},       {"stress.neo_hookean", "neo_hookean"},
-      {"stress.fixed_corotated", "fixed_corotated"}, {"p2g", "neo_hookean"},
+      {"bin.", "neo_hookean"},       {"constitutive.neo_hookean", "neo_hookean"},
+      {"constitutive.fixed_corotated", "fixed_corotated"}, {"p2g", "neo_hookean"},
       {"grid_update", "neo_hookean"}, {"g2p", "neo_hookean"},
       {"step", "neo_hookean"},
   };

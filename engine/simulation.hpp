@@ -87,7 +87,15 @@ class Simulation {
   }
 
   int add_material(const MaterialInfo& info) {
-    materials_.push_back({info, make_material_model<T>(info.model, info.moduli), {0, 0}});
+    Material m{info, make_material_model<T>(info), {0, 0}, info.wave_speed()};
+    std::visit(
+        [this](const auto& model) {
+          using Model = std::decay_t<decltype(model)>;
+          if (Model::kUsesAlpha) enable(Attribute::alpha);
+          if (Model::kUsesJp) enable(Attribute::Jp);
+        },
+        m.model);
+    materials_.push_back(m);
     return int(materials_.size()) - 1;
   }
 
@@ -109,6 +117,7 @@ class Simulation {
         if (pv.x0[d]) pv.x0[d][p] = T(positions[i][d]);
       }
       for (int q = 0; q < 9; ++q) pv.F[q][p] = T(q % 4 == 0);
+      if (pv.Jp) pv.Jp[p] = T(1);
       pv.mass[p] = mass;
       pv.vol0[p] = T(volume);
       pv.id[p] = std::uint32_t(p);
@@ -117,15 +126,17 @@ class Simulation {
     prepared_ = false;
   }
 
-  // Allocates an on_demand attribute (zero-filled; x0 is filled with the current positions).
+  // Allocates an on_demand attribute with its initial value: x0 the current positions, Jp one,
+  // anything else zero.
   void enable(Attribute a) {
     if (storage_.has(a)) return;
     storage_.enable(a);
-    if (a == Attribute::x0) {
-      ParticleView<T> pv = storage_.view();
+    ParticleView<T> pv = storage_.view();
+    if (a == Attribute::x0)
       for (int d = 0; d < 3; ++d)
         for (std::size_t p = 0; p < pv.n; ++p) pv.x0[d][p] = pv.x[d][p];
-    }
+    if (a == Attribute::Jp)
+      for (std::size_t p = 0; p < pv.n; ++p) pv.Jp[p] = T(1);
   }
 
   // Groups particles by material (stable) and measures the initial speed for the time step. Called by
@@ -151,7 +162,7 @@ class Simulation {
     if (config_.fixed_dt > 0) return config_.fixed_dt;
     double c = 0;
     for (const auto& m : materials_)
-      if (m.range.end > m.range.begin) c = std::max(c, m.info.wave_speed());
+      if (m.range.end > m.range.begin) c = std::max(c, m.wave_speed);
     const double dt = config_.cfl * config_.dx / (c + double(max_speed_));
     return std::min(dt, config_.dt_max);
   }
@@ -195,7 +206,7 @@ class Simulation {
           acc.ke += 0.5 * m * v2;
           for (int d = 0; d < 3; ++d) acc.p[d] += m * v[d];
           acc.max_speed = std::max(acc.max_speed, std::sqrt(v2));
-          acc.min_J = std::min(acc.min_J, double(determinant(load_F(pv, p))));
+          acc.min_J = std::min(acc.min_J, double(total_J(pv, p)));
         },
         [](Sums& a, const Sums& b) {
           a.ke += b.ke;
@@ -216,7 +227,7 @@ class Simulation {
                 "diagnostics.elastic_energy", m.range.end - begin, 0.0,
                 [=](std::size_t i, double& acc) {
                   const std::size_t p = begin + i;
-                  acc += double(pv.vol0[p]) * double(model.energy_density(load_F(pv, p)));
+                  acc += double(pv.vol0[p]) * double(model.energy_density(load_F(pv, p), load_state(pv, p)));
                 },
                 [](double& a, double b) { a += b; });
           },
@@ -256,6 +267,11 @@ class Simulation {
   const SparseGrid<T>& grid() const { return grid_; }
   const MaterialInfo& material(int m) const { return materials_[m].info; }
   std::size_t material_count() const { return materials_.size(); }
+  // det of the whole deformation gradient F_E F_P of the particle at physical index p.
+  static T total_J(const ParticleView<T>& pv, std::size_t p) {
+    const T J = determinant(load_F(pv, p));
+    return pv.Jp ? J * pv.Jp[p] : J;
+  }
   // Material index of the particle at physical index p (valid after prepare()).
   int material_of(std::size_t p) const {
     for (std::size_t m = 0; m < materials_.size(); ++m)
@@ -268,12 +284,19 @@ class Simulation {
     MaterialInfo info;
     MaterialModel<T> model;
     ParticleRange range;
+    double wave_speed;  // max over its particles of sqrt(p_wave_modulus / density), last stress pass
   };
 
   static Mat3<T> load_F(const ParticleView<T>& pv, std::size_t p) {
     Mat3<T> F;
     for (int q = 0; q < 9; ++q) F.m[q] = pv.F[q][p];
     return F;
+  }
+  static PlasticState<T> load_state(const ParticleView<T>& pv, std::size_t p) {
+    PlasticState<T> s;
+    if (pv.alpha) s.alpha = pv.alpha[p];
+    if (pv.Jp) s.Jp = pv.Jp[p];
+    return s;
   }
 
   std::vector<ParticleRange> ranges() const {
@@ -304,29 +327,46 @@ class Simulation {
     grid_.activate(binning_.particle_blocks(), backend_);
     const ParticleView<T> pv = storage_.view();
 
-    // 2. Kirchhoff stress, one launch per material range; a non-finite stress (where NaNs are
-    //    born) names its particle before P2G spreads it to the neighbours.
+    // 2. Constitutive update, one launch per material range: the return mapping of plastic models
+    //    (projecting the previous G2P's trial F), then the Kirchhoff stress. A non-finite stress
+    //    (where NaNs are born) names its particle before P2G spreads it to the neighbours. The
+    //    largest current P-wave modulus sets the next time step.
     std::size_t bad_stress = ParticleBinning::kNone;
-    for (const auto& m : materials_) {
+    for (auto& m : materials_) {
       const std::size_t begin = m.range.begin;
       std::visit(
           [&](const auto& model) {
-            const std::size_t bad = backend_.parallel_reduce(
-                stress_launch_name(model), m.range.end - begin, ParticleBinning::kNone,
-                [=](std::size_t i, std::size_t& first) {
+            using Model = std::decay_t<decltype(model)>;
+            const ConstitutiveSummary r = backend_.parallel_reduce(
+                constitutive_launch_name<Model>(), m.range.end - begin, ConstitutiveSummary{},
+                [=](std::size_t i, ConstitutiveSummary& acc) {
                   const std::size_t p = begin + i;
-                  const Mat3<T> tau = model.kirchhoff(load_F(pv, p));
+                  Mat3<T> F = load_F(pv, p);
+                  PlasticState<T> state = load_state(pv, p);
+                  if constexpr (Model::kPlastic) {
+                    model.project(F, state);
+                    for (int q = 0; q < 9; ++q) pv.F[q][p] = F.m[q];
+                    if constexpr (Model::kUsesAlpha) pv.alpha[p] = state.alpha;
+                    if constexpr (Model::kUsesJp) pv.Jp[p] = state.Jp;
+                  }
+                  const Mat3<T> tau = model.kirchhoff(F, state);
                   pv.tau[0][p] = tau(0, 0);
                   pv.tau[1][p] = tau(1, 1);
                   pv.tau[2][p] = tau(2, 2);
                   pv.tau[3][p] = tau(0, 1);
                   pv.tau[4][p] = tau(1, 2);
                   pv.tau[5][p] = tau(2, 0);
-                  if (!std::isfinite(tau(0, 0) + tau(1, 1) + tau(2, 2) + tau(0, 1) + tau(1, 2) + tau(2, 0)) && p < first)
-                    first = p;
+                  if (!std::isfinite(tau(0, 0) + tau(1, 1) + tau(2, 2) + tau(0, 1) + tau(1, 2) + tau(2, 0)) &&
+                      p < acc.first_bad)
+                    acc.first_bad = p;
+                  acc.max_modulus = std::max(acc.max_modulus, double(model.p_wave_modulus(state)));
                 },
-                [](std::size_t& a, std::size_t b) { a = b < a ? b : a; });
-            bad_stress = std::min(bad_stress, bad);
+                [](ConstitutiveSummary& a, const ConstitutiveSummary& b) {
+                  a.first_bad = std::min(a.first_bad, b.first_bad);
+                  a.max_modulus = std::max(a.max_modulus, b.max_modulus);
+                });
+            bad_stress = std::min(bad_stress, r.first_bad);
+            if (m.range.end > begin) m.wave_speed = std::sqrt(r.max_modulus / m.info.density);
           },
           m.model);
     }
@@ -394,10 +434,16 @@ class Simulation {
     max_speed_ = total.max_speed;
   }
 
+  struct ConstitutiveSummary {
+    std::size_t first_bad = ParticleBinning::kNone;
+    double max_modulus = 0;
+  };
+
+  // "constitutive.<model>": a string literal per model type, as launch names must outlive profiles.
   template <class Model>
-  static const char* stress_launch_name(const Model&) {
-    if constexpr (std::is_same_v<Model, NeoHookean<T>>) return "stress.neo_hookean";
-    else return "stress.fixed_corotated";
+  static const char* constitutive_launch_name() {
+    static const std::string name = std::string("constitutive.") + Model::kName;
+    return name.c_str();
   }
 
   [[noreturn]] void fail(const GuardSummary<T>& s, T dt) {
@@ -409,7 +455,7 @@ class Simulation {
         << pv.id[p] << " (material '" << materials_[material_of(p)].info.name << "') "
         << guard_reason_text(s.reason) << ": x = (" << pv.x[0][p] << ", " << pv.x[1][p] << ", " << pv.x[2][p]
         << "), v = (" << pv.v[0][p] << ", " << pv.v[1][p] << ", " << pv.v[2][p]
-        << "), J = " << determinant(load_F(pv, p));
+        << "), J = " << total_J(pv, p);
     if (s.reason == GuardReason::too_fast) msg << ", moved " << s.moved << " m > dx = " << config_.dx << " m";
     throw StabilityError(msg.str());
   }

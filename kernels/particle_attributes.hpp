@@ -19,7 +19,9 @@ namespace firn {
   X(vol0, 1, Real, always, "rest volume (m^3)")                                                        \
   X(id, 1, Index, always, "particle id, stable when particles are reordered")                          \
   X(x0, 3, Real, on_demand, "rest position (m)")                                                       \
-  X(body_accel, 3, Real, on_demand, "external body acceleration (m/s^2)")
+  X(body_accel, 3, Real, on_demand, "external body acceleration (m/s^2)")                              \
+  X(alpha, 1, Real, on_demand, "equivalent plastic strain (J2 plasticity)")                            \
+  X(Jp, 1, Real, on_demand, "plastic volume ratio J_P = det F_P; F then holds the elastic part")
 
 enum class Attribute {
 #define FIRN_ATTRIBUTE_ENUM(name, n, kind, alloc, doc) name,

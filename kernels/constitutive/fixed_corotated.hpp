@@ -4,6 +4,7 @@
 // with F = R S the polar decomposition (R a rotation even for inverted F, from the signed SVD).
 #pragma once
 
+#include "kernels/constitutive/plastic_state.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/mat3.hpp"
 #include "kernels/svd3.hpp"
@@ -13,10 +14,13 @@ namespace firn {
 template <class T>
 struct FixedCorotated {
   static constexpr const char* kName = "fixed_corotated";
+  static constexpr bool kPlastic = false, kUsesAlpha = false, kUsesJp = false;
   T mu;
   T lambda;
 
-  FIRN_HD Mat3<T> kirchhoff(const Mat3<T>& F) const {
+  FIRN_HD T p_wave_modulus(const PlasticState<T>& = {}) const { return lambda + T(2) * mu; }
+
+  FIRN_HD Mat3<T> kirchhoff(const Mat3<T>& F, const PlasticState<T>& = {}) const {
     const Mat3<T> R = polar_rotation(F);
     const T J = determinant(F);
     Mat3<T> tau = (T(2) * mu) * mul_transposed(F - R, F);
@@ -25,7 +29,7 @@ struct FixedCorotated {
     return tau;
   }
 
-  FIRN_HD T energy_density(const Mat3<T>& F) const {
+  FIRN_HD T energy_density(const Mat3<T>& F, const PlasticState<T>& = {}) const {
     Mat3<T> U, V;
     Vec3<T> s;
     svd3(F, U, s, V);
