@@ -8,8 +8,12 @@ namespace firn::app {
 
 void add_bench_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
+void add_run_command(CLI::App& app);
+void add_check_command(CLI::App& app);
+void add_help_command(CLI::App& app);
 
-// Exit status of the command that ran (0: success, 1: a check failed or the run failed).
+// Exit status of the command that ran (0: success, 1: a check or the run failed, 2: bad input,
+// 130: interrupted).
 int exit_status();
 void set_exit_status(int status);
 

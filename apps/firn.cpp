@@ -12,6 +12,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "firn 0.1.0");
   firn::app::add_bench_command(app);
   firn::app::add_verify_command(app);
+  firn::app::add_run_command(app);
+  firn::app::add_check_command(app);
+  firn::app::add_help_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -23,6 +23,16 @@ class ParticleStorage {
   std::size_t size() const { return size_; }
   bool has(Attribute a) const { return enabled_[int(a)]; }
 
+  // Bytes of every enabled column for one particle.
+  std::size_t bytes_per_particle() const {
+    std::size_t bytes = 0;
+#define FIRN_COLUMN_BYTES(name, n, kind, alloc, doc) \
+  bytes += has(Attribute::name) ? n * sizeof(FIRN_SCALAR_##kind(T)) : 0;
+    FIRN_PARTICLE_ATTRIBUTES(FIRN_COLUMN_BYTES)
+#undef FIRN_COLUMN_BYTES
+    return bytes;
+  }
+
   // Allocates an on_demand attribute, zero-filled.
   void enable(Attribute a) {
     enabled_[int(a)] = true;

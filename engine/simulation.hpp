@@ -34,6 +34,7 @@
 #include "kernels/backend/schedule.hpp"
 #include "kernels/block_window.hpp"
 #include "kernels/boundary_conditions.hpp"
+#include "kernels/colliders.hpp"
 #include "kernels/g2p.hpp"
 #include "kernels/grid_update.hpp"
 #include "kernels/p2g.hpp"
@@ -99,8 +100,15 @@ class Simulation {
     return int(materials_.size()) - 1;
   }
 
-  // Adds particles of one material at rest in F = I, each of rest volume `volume`.
+  // Adds particles of one material at rest in F = I, each of rest volume `volume`, all moving with
+  // `velocity`.
   void add_particles(int material, const std::vector<Point>& positions, const Point& velocity, double volume) {
+    add_particles(material, positions, std::vector<Point>(positions.size(), velocity), volume);
+  }
+
+  // As above, with a velocity per particle.
+  void add_particles(int material, const std::vector<Point>& positions, const std::vector<Point>& velocities,
+                     double volume) {
     if (material < 0 || material >= int(materials_.size())) throw std::invalid_argument("unknown material index");
     const std::size_t n0 = storage_.size();
     if (prepared_)  // particles already grouped: restate their materials before staging more
@@ -113,7 +121,7 @@ class Simulation {
       const std::size_t p = n0 + i;
       for (int d = 0; d < 3; ++d) {
         pv.x[d][p] = T(positions[i][d]);
-        pv.v[d][p] = T(velocity[d]);
+        pv.v[d][p] = T(velocities[i][d]);
         if (pv.x0[d]) pv.x0[d][p] = T(positions[i][d]);
       }
       for (int q = 0; q < 9; ++q) pv.F[q][p] = T(q % 4 == 0);
@@ -123,6 +131,21 @@ class Simulation {
       pv.id[p] = std::uint32_t(p);
     }
     staged_material_.insert(staged_material_.end(), positions.size(), material);
+    prepared_ = false;
+  }
+
+  // Adds a kinematic collider (at most kMaxColliders).
+  void add_collider(const Collider<T>& c) {
+    if (int(colliders_.size()) >= kMaxColliders)
+      throw std::invalid_argument("at most " + std::to_string(kMaxColliders) + " colliders");
+    colliders_.push_back(c);
+  }
+
+  // A total force spread over the particles inside [lo, hi] when the run starts, in proportion to
+  // their mass (every such particle gets the acceleration force / total mass), ramped linearly
+  // from zero over ramp_time (0: applied at once). A particle carries the first load that holds it.
+  void add_load(const Point& lo, const Point& hi, const Point& force, double ramp_time) {
+    loads_.push_back({lo, hi, force, ramp_time, {0, 0, 0}, -1});
     prepared_ = false;
   }
 
@@ -153,7 +176,12 @@ class Simulation {
     }
     staged_material_.clear();
     storage_.permute(order.data(), backend_);
+    assign_loads();
     max_speed_ = T(diagnostics().max_speed);
+    const ParticleView<T> pv = storage_.view();
+    double lightest = std::numeric_limits<double>::max();
+    for (std::size_t p = 0; p < pv.n; ++p) lightest = std::min(lightest, double(pv.mass[p]));
+    min_node_mass_ = T(kEmptyNodeMassFraction * lightest);
     prepared_ = true;
   }
 
@@ -171,6 +199,7 @@ class Simulation {
 
   void step(double dt) {
     prepare();
+    ramp_loads(time_ + dt);
     const bool quadratic = config_.shape == Shape::quadratic;
     switch (config_.transfer) {
       case Transfer::apic:
@@ -258,6 +287,7 @@ class Simulation {
 
   ParticleView<T> particles() { return storage_.view(); }
   std::size_t particle_count() const { return storage_.size(); }
+  std::size_t bytes_per_particle() const { return storage_.bytes_per_particle(); }
   double time() const { return time_; }
   long steps() const { return steps_; }
   double last_dt() const { return last_dt_; }
@@ -395,9 +425,15 @@ class Simulation {
     // 4. Grid update.
     GridUpdateParams<T> up{};
     up.dt = dt;
+    up.time = T(time_ + double(dt));
+    up.dx = g.dx;
+    up.min_mass = min_node_mass_;
+    up.collider_count = int(colliders_.size());
+    for (std::size_t c = 0; c < colliders_.size(); ++c) up.colliders[c] = colliders_[c];
     for (int d = 0; d < 3; ++d) {
       up.gravity[d] = T(config_.gravity[d]);
       up.nodes[d] = g.nodes[d];
+      up.origin[d] = g.origin[d];
     }
     for (int f = 0; f < 6; ++f)
       up.walls[f] = Wall<T>{config_.walls[f].type, config_.walls[f].width, T(config_.walls[f].friction)};
@@ -434,6 +470,59 @@ class Simulation {
     max_speed_ = total.max_speed;
   }
 
+  struct Load {
+    Point lo, hi, force;
+    double ramp_time;
+    Point accel;          // force / mass of the particles it holds
+    double factor;        // ramp factor last written to body_accel (-1: never)
+  };
+
+  // Marks each particle with the first load whose region holds it and sets the loads' accelerations.
+  void assign_loads() {
+    if (loads_.empty()) return;
+    enable(Attribute::load);
+    enable(Attribute::body_accel);
+    ParticleView<T> pv = storage_.view();
+    std::vector<double> mass(loads_.size(), 0.0);
+    for (std::size_t p = 0; p < pv.n; ++p) {
+      pv.load[p] = 0;
+      for (std::size_t k = 0; k < loads_.size() && pv.load[p] == 0; ++k) {
+        const Load& l = loads_[k];
+        bool inside = true;
+        for (int d = 0; d < 3; ++d) inside = inside && pv.x[d][p] >= l.lo[d] && pv.x[d][p] <= l.hi[d];
+        if (inside) {
+          pv.load[p] = std::uint32_t(k + 1);
+          mass[k] += pv.mass[p];
+        }
+      }
+    }
+    for (std::size_t k = 0; k < loads_.size(); ++k) {
+      if (!(mass[k] > 0)) throw std::invalid_argument("load " + std::to_string(k + 1) + " holds no particles");
+      for (int d = 0; d < 3; ++d) loads_[k].accel[d] = loads_[k].force[d] / mass[k];
+      loads_[k].factor = -1;
+    }
+  }
+
+  // Writes body_accel for the ramp factors at time t, only when one of them changed.
+  void ramp_loads(double t) {
+    if (loads_.empty()) return;
+    bool changed = false;
+    std::vector<T> accel(3 * (loads_.size() + 1), T(0));
+    for (std::size_t k = 0; k < loads_.size(); ++k) {
+      Load& l = loads_[k];
+      const double f = l.ramp_time > 0 ? std::min(1.0, t / l.ramp_time) : 1.0;
+      changed = changed || f != l.factor;
+      l.factor = f;
+      for (int d = 0; d < 3; ++d) accel[3 * (k + 1) + d] = T(f * l.accel[d]);
+    }
+    if (!changed) return;
+    const ParticleView<T> pv = storage_.view();
+    const T* table = accel.data();
+    backend_.parallel_for("loads.ramp", pv.n, [=](std::size_t p) {
+      for (int d = 0; d < 3; ++d) pv.body_accel[d][p] = table[3 * pv.load[p] + d];
+    });
+  }
+
   struct ConstitutiveSummary {
     std::size_t first_bad = ParticleBinning::kNone;
     double max_modulus = 0;
@@ -464,11 +553,17 @@ class Simulation {
   Backend backend_;
   ParticleStorage<T> storage_;
   std::vector<Material> materials_;
+  std::vector<Collider<T>> colliders_;
+  std::vector<Load> loads_;
   std::vector<int> staged_material_;  // material of each particle added since the last prepare()
   SparseGrid<T> grid_;
   ParticleBinning binning_;
   std::vector<GuardSummary<T>> checks_;
   T max_speed_ = T(0);
+  // A node with less than this fraction of the lightest particle's mass counts as empty: its
+  // weight in any gather is below 1e-10 and its velocity would be rounding noise.
+  static constexpr double kEmptyNodeMassFraction = 1e-10;
+  T min_node_mass_ = T(0);
   double time_ = 0, last_dt_ = 0;
   long steps_ = 0;
   bool prepared_ = false;

@@ -20,6 +20,7 @@ namespace firn {
   X(id, 1, Index, always, "particle id, stable when particles are reordered")                          \
   X(x0, 3, Real, on_demand, "rest position (m)")                                                       \
   X(body_accel, 3, Real, on_demand, "external body acceleration (m/s^2)")                              \
+  X(load, 1, Index, on_demand, "1 + index of the load the particle carries, 0 for none")              \
   X(alpha, 1, Real, on_demand, "equivalent plastic strain (J2 plasticity)")                            \
   X(Jp, 1, Real, on_demand, "plastic volume ratio J_P = det F_P; F then holds the elastic part")
 

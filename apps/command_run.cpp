@@ -1,0 +1,125 @@
+// firn run SCENE [--out DIR] [--set KEY=VALUE]... [--threads N] [--preview]
+//                [--render none|spheres|surface] [--video] [--mesh] [--gl egl|osmesa]
+// Validates the scene (any fault: one line on standard error, exit status 2, nothing written),
+// runs it with progress on a terminal, and writes the outputs of DESIGN.md section 5.
+// Exit status: 0 completed, 1 unstable or failed, 2 bad scene or options, 130 interrupted.
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "apps/commands.hpp"
+#include "engine/scene/scene_run.hpp"
+
+namespace firn::app {
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_interrupt(int) { g_interrupted = true; }
+
+std::string clock_text(double seconds) {
+  const long s = long(seconds + 0.5);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
+  return buf;
+}
+
+// One line on a terminal, redrawn at most four times a second.
+class ProgressLine {
+ public:
+  void operator()(const RunProgress& p) {
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - last_).count() < 0.25 && p.time < p.end_time) return;
+    last_ = now;
+    const double wall = std::chrono::duration<double>(now - start_).count();
+    const double eta = p.time > 0 ? wall * (p.end_time - p.time) / p.time : 0;
+    std::fprintf(stderr, "\r  t = %.4g / %.4g s   frame %d/%d   step %ld   %.0f steps/s   ETA %s   ", p.time,
+                 p.end_time, p.frame, p.frames, p.steps, p.step_seconds > 0 ? double(p.steps) / p.step_seconds : 0.0,
+                 clock_text(eta).c_str());
+    drawn_ = true;
+  }
+  // Ends the line so that later messages start on their own.
+  void finish() {
+    if (drawn_) std::fprintf(stderr, "\n");
+    drawn_ = false;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_{};
+  bool drawn_ = false;
+};
+
+}  // namespace
+
+void add_run_command(CLI::App& app) {
+  struct Options {
+    std::string scene, out, render = "none", gl;
+    std::vector<std::string> sets;
+    int threads = 0;
+    bool preview = false, video = false, mesh = false;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* run = app.add_subcommand("run", "run a scene and write its outputs");
+  run->add_option("scene", o->scene, "scene file (TOML)")->required();
+  run->add_option("--out", o->out, "output folder (default: out/<scene name>)");
+  run->add_option("--set", o->sets, "override a scene key, e.g. --set simulation.dx=0.002 (repeatable)");
+  run->add_option("--threads", o->threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  run->add_flag("--preview", o->preview, "coarser and faster: dx doubled, fewer particles per cell and frames");
+  run->add_option("--render", o->render, "draw frames: none, spheres or surface")
+      ->check(CLI::IsMember({"none", "spheres", "surface"}))->capture_default_str();
+  run->add_flag("--video", o->video, "encode the frames to video.mp4");
+  run->add_flag("--mesh", o->mesh, "write reconstructed surfaces to meshes/NNNNN.ply");
+  run->add_option("--gl", o->gl, "OpenGL context: egl or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
+  run->callback([o]() {
+    if (o->render != "none" || o->video || o->mesh || !o->gl.empty()) {
+      std::fprintf(stderr, "firn run: rendering (--render, --video, --mesh, --gl) is not built yet; use --render none\n");
+      set_exit_status(2);
+      return;
+    }
+    LoadedScene scene;
+    try {
+      scene = load_scene(o->scene, SceneOptions{o->sets, o->preview});
+    } catch (const SceneError& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      set_exit_status(2);
+      return;
+    }
+    RunOptions options;
+    options.out_dir = o->out.empty() ? "out/" + scene.spec.name : o->out;
+    options.threads = o->threads;
+    options.interrupt = &g_interrupted;
+    ProgressLine progress;
+    if (isatty(STDERR_FILENO)) options.progress = std::ref(progress);
+    std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
+    RunSummary s;
+    try {
+      s = run_scene(scene, options);
+    } catch (const SceneError& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      set_exit_status(2);
+      return;
+    } catch (const std::exception& e) {
+      progress.finish();
+      std::fprintf(stderr, "firn run: %s\n", e.what());
+      set_exit_status(1);
+      return;
+    }
+    progress.finish();
+    if (s.status != "ok") {
+      std::fprintf(stderr, "firn run: %s: %s (outputs so far in %s)\n", s.status.c_str(), s.error.c_str(),
+                   options.out_dir.c_str());
+      set_exit_status(s.status == "interrupted" ? 130 : 1);
+      return;
+    }
+    std::printf("%s: ok, %zu particles, %ld steps, %.1f s (%.3g particle-steps/s on %d threads), outputs in %s\n",
+                scene.spec.name.c_str(), s.particles, s.steps, s.wall_seconds, s.particle_steps_per_second(),
+                s.threads, options.out_dir.c_str());
+  });
+}
+
+}  // namespace firn::app

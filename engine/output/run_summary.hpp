@@ -1,0 +1,28 @@
+// summary.json (DESIGN.md section 5): how a run ended and what it cost.
+#pragma once
+
+#include <string>
+
+namespace firn {
+
+struct RunSummary {
+  std::string status = "ok";  // ok, unstable, interrupted or failed
+  std::string error;          // the message, when not ok
+  long steps = 0;
+  std::size_t particles = 0;
+  double simulated_time = 0;
+  double wall_seconds = 0;
+  double step_seconds = 0;  // inside the step loop
+  int threads = 0;
+  std::string backend = "openmp";
+  std::string precision = "float";
+  double peak_memory_mb = 0;
+  std::string state_hash;  // of the final particle state (Simulation::state_hash), hex
+  double particle_steps_per_second() const { return step_seconds > 0 ? double(particles) * double(steps) / step_seconds : 0; }
+  std::string to_json() const;
+};
+
+// Peak resident memory of this process so far (MB).
+double peak_memory_mb();
+
+}  // namespace firn

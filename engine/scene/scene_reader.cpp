@@ -1,0 +1,615 @@
+#include "engine/scene/scene_reader.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <deque>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "engine/material_catalog.hpp"
+#include "engine/scene/scene_schema.hpp"
+
+namespace firn {
+namespace {
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (std::tolower(a[i - 1]) != std::tolower(b[j - 1]))});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// " (did you mean 'x'?)" for the closest candidate within a third of the word's length, or "".
+std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
+  for (const auto& c : candidates) {
+    const std::size_t d = edit_distance(word, c);
+    if (d < best_d) best = c, best_d = d;
+  }
+  return best.empty() ? "" : " (did you mean '" + best + "'?)";
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
+  return s;
+}
+
+std::string type_name(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a number";
+    case toml::node_type::boolean: return "a boolean";
+    default: return "a date or time";
+  }
+}
+
+std::string number_text(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+// Where messages point: the file position of a node, or the --set that put it there.
+struct Context {
+  std::string file;
+  std::map<std::string, std::string> overrides;  // full key -> the --set argument
+
+  std::string where(const toml::node* node, const toml::source_region& fallback, const std::string& key) const {
+    for (auto it = overrides.rbegin(); it != overrides.rend(); ++it)
+      if (key == it->first || key.rfind(it->first + ".", 0) == 0) return "--set " + it->second;
+    const toml::source_region& r = node && node->source().begin.line ? node->source() : fallback;
+    return file + ":" + std::to_string(r.begin.line) + ":" + std::to_string(r.begin.column);
+  }
+  [[noreturn]] void fail(const toml::node* node, const toml::source_region& fallback, const std::string& key,
+                         const std::string& message) const {
+    throw SceneError(where(node, fallback, key) + ": " + key + ": " + message);
+  }
+};
+
+// Reads one table against its section's keys, converting to SI and recording every value used
+// (defaults included) into `out`. finish() rejects the keys nobody read.
+class TableReader {
+ public:
+  TableReader(const Context& ctx, const toml::table& table, const SectionSpec& section, std::string prefix,
+              toml::table& out)
+      : ctx_(ctx), table_(table), section_(section), prefix_(std::move(prefix)), out_(out) {}
+
+  void set_filter(const std::string& f) { filter_ = f; }
+  bool has(const std::string& key) const { return table_.contains(key); }
+  std::string full(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
+  const toml::source_region& source() const { return table_.source(); }
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const {
+    ctx_.fail(table_.get(key), table_.source(), full(key), message);
+  }
+  std::string where(const std::string& key) const { return ctx_.where(table_.get(key), table_.source(), full(key)); }
+
+  double number(const std::string& key) {
+    const KeySpec& k = spec(key);
+    const toml::node* n = value(k);
+    const double v = to_number(*n, k, key);
+    check_range(k, key, v);
+    out_.insert_or_assign(key, v);
+    return v;
+  }
+  std::optional<double> optional_number(const std::string& key) {
+    if (!has(key)) {
+      used_.push_back(key);
+      return std::nullopt;
+    }
+    return number(key);
+  }
+  long long integer(const std::string& key) {
+    const KeySpec& k = spec(key);
+    const toml::node* n = value(k);
+    if (!n->is_integer()) fail(key, "expected an integer, got " + type_name(*n));
+    const long long v = n->as_integer()->get();
+    check_range(k, key, double(v));
+    out_.insert_or_assign(key, v);
+    return v;
+  }
+  Point vec3(const std::string& key) {
+    const KeySpec& k = spec(key);
+    const toml::node* n = value(k);
+    const toml::array* a = n->as_array();
+    if (!a || a->size() != 3)
+      fail(key, std::string("expected [x, y, z] in ") + si_unit(k.quantity) + ", got " +
+                    (a ? "an array of " + std::to_string(a->size()) : type_name(*n)));
+    Point p;
+    toml::array o;
+    for (int d = 0; d < 3; ++d) {
+      p[d] = to_number(*a->get(std::size_t(d)), k, key);
+      o.push_back(p[d]);
+    }
+    out_.insert_or_assign(key, o);
+    return p;
+  }
+  std::string choice(const std::string& key) {
+    const KeySpec& k = spec(key);
+    const toml::node* n = value(k);
+    if (!n->is_string()) fail(key, "expected one of " + join(k.choices) + ", got " + type_name(*n));
+    const std::string v = n->as_string()->get();
+    if (std::find(k.choices.begin(), k.choices.end(), v) == k.choices.end())
+      fail(key, "'" + v + "' is not one of " + join(k.choices) + suggestion(v, k.choices));
+    out_.insert_or_assign(key, v);
+    return v;
+  }
+  int choice_index(const std::string& key) {
+    const std::string v = choice(key);
+    const auto& c = spec(key).choices;
+    return int(std::find(c.begin(), c.end(), v) - c.begin());
+  }
+  std::optional<std::string> text(const std::string& key) {
+    const KeySpec& k = spec(key);
+    const toml::node* n = value(k);
+    if (!n) return std::nullopt;
+    if (!n->is_string()) fail(key, "expected a string, got " + type_name(*n));
+    out_.insert_or_assign(key, n->as_string()->get());
+    return n->as_string()->get();
+  }
+  const toml::array& tables(const std::string& key) {
+    const KeySpec& k = spec(key);
+    const toml::node* n = value(k);
+    if (!n->is_array_of_tables() || n->as_array()->empty())
+      fail(key, "expected a non-empty array of tables, got " + type_name(*n));
+    return *n->as_array();
+  }
+
+  void finish() const {
+    for (const auto& [name, node] : table_) {
+      const std::string key(name.str());
+      if (std::find(used_.begin(), used_.end(), key) != used_.end()) continue;
+      std::vector<std::string> applicable;
+      bool elsewhere = false;
+      for (const KeySpec& k : section_.keys) {
+        if (k.applies_to.empty() || k.applies_to == filter_) applicable.push_back(k.key);
+        else if (k.key == key) elsewhere = true;
+      }
+      if (elsewhere) ctx_.fail(&node, table_.source(), full(key), "does not apply to '" + filter_ + "'");
+      ctx_.fail(&node, table_.source(), full(key), "unknown key" + suggestion(key, applicable));
+    }
+  }
+
+ private:
+  const KeySpec& spec(const std::string& key) {
+    used_.push_back(key);
+    for (const KeySpec& k : section_.keys)
+      if (k.key == key && (k.applies_to.empty() || k.applies_to == filter_)) return k;
+    throw std::logic_error("scene schema has no key " + section_.name + "." + key + " for '" + filter_ + "'");
+  }
+  // The node given, or the default parsed from the schema; null for an absent optional key.
+  const toml::node* value(const KeySpec& k) {
+    if (const toml::node* n = table_.get(k.key)) return n;
+    if (!k.default_toml.empty()) {
+      defaults_.push_back(toml::parse("v = " + k.default_toml));
+      return defaults_.back().get("v");
+    }
+    if (k.required) fail(k.key, "missing (required" + (k.applies_to.empty() ? "" : " for '" + k.applies_to + "'") + ")");
+    return nullptr;
+  }
+  double to_number(const toml::node& n, const KeySpec& k, const std::string& key) const {
+    if (n.is_integer()) return double(n.as_integer()->get());
+    if (n.is_floating_point()) return n.as_floating_point()->get();
+    if (n.is_string()) {
+      try {
+        return parse_quantity(n.as_string()->get(), k.quantity);
+      } catch (const std::invalid_argument& e) {
+        ctx_.fail(&n, table_.source(), full(key), e.what());
+      }
+    }
+    ctx_.fail(&n, table_.source(), full(key),
+              std::string("expected a ") + quantity_name(k.quantity) +
+                  (k.quantity == Quantity::dimensionless ? "" : std::string(" (") + si_unit(k.quantity) + ")") +
+                  ", got " + type_name(n));
+  }
+  void check_range(const KeySpec& k, const std::string& key, double v) const {
+    if (!std::isfinite(v)) fail(key, "must be finite");
+    const bool below = k.min_exclusive ? !(v > k.min) : !(v >= k.min);
+    if (below || !(v <= k.max)) {
+      std::string r;
+      if (k.max == std::numeric_limits<double>::infinity())
+        r = std::string(k.min_exclusive ? "> " : ">= ") + number_text(k.min);
+      else
+        r = "in " + std::string(k.min_exclusive ? "(" : "[") + number_text(k.min) + ", " + number_text(k.max) + "]";
+      fail(key, "must be " + r + " (got " + number_text(v) + ")");
+    }
+  }
+
+  const Context& ctx_;
+  const toml::table& table_;
+  const SectionSpec& section_;
+  std::string prefix_;
+  toml::table& out_;
+  std::string filter_;
+  std::vector<std::string> used_;
+  std::deque<toml::table> defaults_;
+};
+
+const toml::table& subtable(const Context& ctx, const toml::table& root, const std::string& name, toml::table& empty) {
+  const toml::node* n = root.get(name);
+  if (!n) return empty;
+  if (!n->is_table()) ctx.fail(n, root.source(), name, "expected a table [" + name + "], got " + type_name(*n));
+  return *n->as_table();
+}
+
+BodyShape read_shape(const Context& ctx, TableReader& r, toml::table& out, const std::string& prefix) {
+  BodyShape s;
+  const std::string kind = r.choice("shape");
+  r.set_filter(kind);
+  if (kind == "sphere") {
+    s.kind = BodyShape::Kind::sphere;
+    s.center = r.vec3("center");
+    s.radius = r.number("radius");
+  } else if (kind == "box") {
+    s.kind = BodyShape::Kind::box;
+    s.min = r.vec3("min");
+    s.max = r.vec3("max");
+    for (int d = 0; d < 3; ++d)
+      if (!(s.max[d] > s.min[d])) r.fail("max", "must exceed min in every component");
+  } else if (kind == "cylinder") {
+    s.kind = BodyShape::Kind::cylinder;
+    s.center = r.vec3("center");
+    s.radius = r.number("radius");
+    s.length = r.number("length");
+    s.axis = r.choice_index("axis");
+  } else {
+    s.kind = kind == "union" ? BodyShape::Kind::union_of : BodyShape::Kind::difference_of;
+    toml::array parts_out;
+    const toml::array& parts = r.tables("parts");
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      toml::table part_out;
+      TableReader pr(ctx, *parts.get(i)->as_table(), scene_section("bodies.parts"),
+                     prefix + ".parts." + std::to_string(i), part_out);
+      s.parts.push_back(read_shape(ctx, pr, part_out, prefix + ".parts." + std::to_string(i)));
+      pr.finish();
+      parts_out.push_back(std::move(part_out));
+    }
+    out.insert_or_assign("parts", std::move(parts_out));
+  }
+  return s;
+}
+
+// Applies "a.b.c=value" to the parsed file; numeric path parts index arrays ("bodies.0.velocity").
+void apply_override(Context& ctx, toml::table& root, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw SceneError("--set " + assignment + ": expected KEY=VALUE, e.g. simulation.dx=0.002");
+  const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  std::vector<std::string> parts;
+  for (std::size_t b = 0;;) {
+    const auto e = key.find('.', b);
+    parts.push_back(key.substr(b, e - b));
+    if (e == std::string::npos) break;
+    b = e + 1;
+  }
+  // The value as TOML; where it is not TOML, the plain string (so `--set tire.speed=5 mph` works).
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + text);
+  } catch (const toml::parse_error&) {
+    parsed.insert("v", text);
+  }
+  toml::node* at = &root;
+  std::string path;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const std::string& part = parts[i];
+    path += (i ? "." : "") + part;
+    const bool last = i + 1 == parts.size();
+    if (toml::table* t = at->as_table()) {
+      if (last) {
+        t->insert_or_assign(part, *parsed.get("v"));
+        break;
+      }
+      if (!t->contains(part)) t->insert(part, toml::table{});
+      at = t->get(part);
+    } else if (toml::array* a = at->as_array()) {
+      char* end = nullptr;
+      const unsigned long index = std::strtoul(part.c_str(), &end, 10);
+      if (part.empty() || *end || index >= a->size())
+        throw SceneError("--set " + assignment + ": " + path + ": no element " + part + " (the array has " +
+                         std::to_string(a->size()) + ")");
+      if (last) {
+        a->replace(a->begin() + long(index), *parsed.get("v"));
+        break;
+      }
+      at = a->get(index);
+    } else {
+      throw SceneError("--set " + assignment + ": " + path + ": is a value, not a table");
+    }
+  }
+  ctx.overrides[key] = assignment;
+}
+
+MaterialInfo read_material(const Context& ctx, const std::string& name, const toml::table& given, toml::table& out) {
+  const std::string prefix = "materials." + name;
+  // Merge the preset's values under the scene's keys.
+  toml::table merged = given;
+  const MaterialPreset* preset = nullptr;
+  if (const toml::node* p = given.get("preset")) {
+    if (!p->is_string()) ctx.fail(p, given.source(), prefix + ".preset", "expected a string, got " + type_name(*p));
+    const std::string pname = p->as_string()->get();
+    preset = find_material_preset(pname);
+    if (!preset) {
+      std::vector<std::string> names;
+      for (const auto& q : material_presets()) names.push_back(q.name);
+      ctx.fail(p, given.source(), prefix + ".preset", "unknown preset '" + pname + "'" + suggestion(pname, names));
+    }
+    const bool own_moduli = given.contains("E") || given.contains("nu") || given.contains("K") || given.contains("G");
+    if (!given.contains("model")) merged.insert("model", preset->model);
+    const MaterialModelSpec* spec = find_material_model(preset->model);
+    for (const auto& [key, value] : preset->values) {
+      const bool modulus = key == "E" || key == "nu" || key == "K" || key == "G";
+      if (given.contains(key) || (modulus && own_moduli)) continue;
+      const MaterialParameter* param = nullptr;
+      for (const auto& q : spec->parameters)
+        if (q.key == key) param = &q;
+      if (param && !param->choices.empty()) merged.insert(key, param->choices.at(std::size_t(value)));
+      else merged.insert(key, value);
+    }
+  }
+  TableReader r(ctx, merged, scene_section("materials.NAME"), prefix, out);
+  r.text("preset");
+  out.erase("preset");  // the resolved scene spells the values out
+  if (!merged.contains("model")) r.fail("model", "missing (give `model` or `preset`)");
+  MaterialInfo info;
+  info.name = name;
+  info.model = r.choice("model");
+  r.set_filter(info.model);
+  if (!merged.contains("density")) r.fail("density", "missing (required)");
+  info.density = r.number("density");
+  const auto E = r.optional_number("E"), nu = r.optional_number("nu"), K = r.optional_number("K"),
+             G = r.optional_number("G");
+  try {
+    info.moduli = ElasticModuli::from_any_two(E, nu, K, G);
+  } catch (const std::invalid_argument& e) {
+    r.fail(E ? "E" : K ? "K" : G ? "G" : "nu", e.what());
+  }
+  for (const MaterialParameter& p : find_material_model(info.model)->parameters)
+    info.params[p.key] = p.choices.empty() ? r.number(p.key) : double(r.choice_index(p.key));
+  r.finish();
+  return info;
+}
+
+}  // namespace
+
+int SceneSpec::per_axis() const { return int(std::lround(std::cbrt(double(particles_per_cell)))); }
+
+LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
+  Context ctx{path, {}};
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    std::string what(e.description());
+    throw SceneError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": TOML syntax: " + what);
+  }
+  for (const std::string& a : options.overrides) apply_override(ctx, root, a);
+
+  const std::vector<std::string> sections = {"simulation", "walls",   "materials", "bodies",
+                                             "colliders",  "loads",   "metrics",   "render"};
+  for (const auto& [name, node] : root) {
+    const std::string key(name.str());
+    if (std::find(sections.begin(), sections.end(), key) == sections.end())
+      ctx.fail(&node, root.source(), key, "unknown section" + suggestion(key, sections));
+  }
+
+  LoadedScene loaded;
+  SceneSpec& s = loaded.spec;
+  s.path = path;
+  {
+    const auto slash = path.find_last_of('/');
+    s.name = path.substr(slash == std::string::npos ? 0 : slash + 1);
+    s.name = s.name.substr(0, s.name.rfind(".toml"));
+  }
+  toml::table out, empty;
+
+  // [simulation]
+  {
+    toml::table o;
+    const toml::table& t = subtable(ctx, root, "simulation", empty);
+    if (!root.contains("simulation")) ctx.fail(nullptr, root.source(), "simulation", "missing section [simulation]");
+    TableReader r(ctx, t, scene_section("simulation"), "simulation", o);
+    SimulationConfig& c = s.config;
+    c.domain_min = r.vec3("domain_min");
+    c.domain_max = r.vec3("domain_max");
+    for (int d = 0; d < 3; ++d)
+      if (!(c.domain_max[d] > c.domain_min[d])) r.fail("domain_max", "must exceed domain_min in every component");
+    c.dx = r.number("dx");
+    for (int d = 0; d < 3; ++d)
+      if ((c.domain_max[d] - c.domain_min[d]) / c.dx > 1e5) r.fail("dx", "gives more than 1e5 cells along an axis");
+    s.particles_per_cell = int(r.integer("particles_per_cell"));
+    if (std::lround(std::pow(s.per_axis(), 3)) != s.particles_per_cell)
+      r.fail("particles_per_cell", "must be a cube: 1, 8, 27 or 64 (got " + std::to_string(s.particles_per_cell) + ")");
+    s.end_time = r.number("end_time");
+    const auto fi = r.optional_number("frame_interval");
+    s.frame_interval = fi ? *fi : s.end_time / 100;
+    o.insert_or_assign("frame_interval", s.frame_interval);
+    c.cfl = r.number("cfl");
+    c.dt_max = r.number("dt_max");
+    c.fixed_dt = r.number("fixed_dt");
+    c.gravity = r.vec3("gravity");
+    c.transfer = Transfer(r.choice_index("transfer"));
+    c.flip_alpha = r.number("flip_alpha");
+    c.shape = Shape(r.choice_index("shape"));
+    s.precision = r.choice("precision");
+    r.finish();
+    if (options.preview) {
+      c.dx *= 2;
+      s.particles_per_cell = std::max(1, s.per_axis() / 2);
+      s.particles_per_cell = s.particles_per_cell * s.particles_per_cell * s.particles_per_cell;
+      s.frame_interval *= 2;
+      o.insert_or_assign("dx", c.dx);
+      o.insert_or_assign("particles_per_cell", s.particles_per_cell);
+      o.insert_or_assign("frame_interval", s.frame_interval);
+    }
+    out.insert("simulation", std::move(o));
+  }
+  // [walls]
+  {
+    toml::table o;
+    TableReader r(ctx, subtable(ctx, root, "walls", empty), scene_section("walls"), "walls", o);
+    const WallType all = WallType(r.choice_index("type"));
+    const double friction = r.number("friction");
+    const int width = int(r.integer("width"));
+    const char* faces[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+    for (int f = 0; f < 6; ++f) {
+      WallType type = all;
+      if (r.has(faces[f])) type = WallType(r.choice_index(faces[f]));
+      else o.insert_or_assign(faces[f], scene_section("walls").keys[0].choices[std::size_t(all)]);
+      s.config.walls[f] = Wall<double>{type, width, friction};
+    }
+    r.finish();
+    out.insert("walls", std::move(o));
+  }
+  // [materials.NAME]
+  {
+    const toml::table& t = subtable(ctx, root, "materials", empty);
+    if (t.empty()) ctx.fail(root.get("materials"), root.source(), "materials", "no materials: add a [materials.NAME] table");
+    toml::table o;
+    for (const auto& [name, node] : t) {
+      const std::string n(name.str());
+      if (!node.is_table()) ctx.fail(&node, t.source(), "materials." + n, "expected a table [materials." + n + "]");
+      toml::table mo;
+      s.materials.push_back(read_material(ctx, n, *node.as_table(), mo));
+      o.insert(n, std::move(mo));
+    }
+    out.insert("materials", std::move(o));
+  }
+  auto table_array = [&](const std::string& name) -> const toml::array* {
+    const toml::node* n = root.get(name);
+    if (!n) return nullptr;
+    if (!n->is_array_of_tables()) ctx.fail(n, root.source(), name, "expected [[" + name + "]] tables, got " + type_name(*n));
+    return n->as_array();
+  };
+  // [[bodies]]
+  {
+    const toml::array* a = table_array("bodies");
+    if (!a || a->empty()) ctx.fail(nullptr, root.source(), "bodies", "no bodies: add a [[bodies]] table");
+    toml::array o;
+    std::vector<std::string> names;
+    for (const auto& m : s.materials) names.push_back(m.name);
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const std::string prefix = "bodies." + std::to_string(i);
+      toml::table bo;
+      TableReader r(ctx, *a->get(i)->as_table(), scene_section("bodies"), prefix, bo);
+      BodySpec b;
+      b.name = r.text("name").value_or("body " + std::to_string(i + 1));
+      b.location = r.where("shape") + ": " + prefix;
+      const std::string material = *r.text("material");
+      const auto it = std::find(names.begin(), names.end(), material);
+      if (it == names.end())
+        r.fail("material", "no material '" + material + "' (defined: " + join(names) + ")" + suggestion(material, names));
+      b.material = int(it - names.begin());
+      b.velocity = r.vec3("velocity");
+      b.angular_velocity = r.vec3("angular_velocity");
+      b.jitter = r.number("jitter");
+      b.seed = std::uint64_t(r.integer("seed"));
+      b.shape = read_shape(ctx, r, bo, prefix);
+      r.finish();
+      Point lo, hi;
+      b.shape.bounds(lo, hi);
+      for (int d = 0; d < 3; ++d)
+        if (lo[d] < s.config.domain_min[d] || hi[d] > s.config.domain_max[d])
+          r.fail("shape", "body '" + b.name + "' extends outside the domain along " + "xyz"[d] + " (" +
+                              number_text(lo[d]) + " to " + number_text(hi[d]) + " m, domain " +
+                              number_text(s.config.domain_min[d]) + " to " + number_text(s.config.domain_max[d]) + " m)");
+      s.bodies.push_back(b);
+      o.push_back(std::move(bo));
+    }
+    out.insert("bodies", std::move(o));
+  }
+  // [[colliders]]
+  if (const toml::array* a = table_array("colliders")) {
+    toml::array o;
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      toml::table co;
+      TableReader r(ctx, *a->get(i)->as_table(), scene_section("colliders"), "colliders." + std::to_string(i), co);
+      ColliderSpec c;
+      c.name = r.text("name").value_or("collider " + std::to_string(i + 1));
+      const std::string shape = r.choice("shape");
+      r.set_filter(shape);
+      if (shape == "plane") {
+        c.kind = ColliderSpec::Kind::plane;
+        c.point = r.vec3("point");
+        c.normal = r.vec3("normal");
+        const double len = std::sqrt(c.normal[0] * c.normal[0] + c.normal[1] * c.normal[1] + c.normal[2] * c.normal[2]);
+        if (!(len > 0)) r.fail("normal", "must not be zero");
+        for (double& v : c.normal) v /= len;
+      } else {
+        c.kind = ColliderSpec::Kind::box;
+        c.min = r.vec3("min");
+        c.max = r.vec3("max");
+        for (int d = 0; d < 3; ++d)
+          if (!(c.max[d] > c.min[d])) r.fail("max", "must exceed min in every component");
+      }
+      c.velocity = r.vec3("velocity");
+      c.boundary = WallType(r.choice_index("boundary") + 1);
+      c.friction = r.number("friction");
+      r.finish();
+      s.colliders.push_back(c);
+      o.push_back(std::move(co));
+    }
+    if (int(s.colliders.size()) > kMaxColliders)
+      ctx.fail(a, root.source(), "colliders", "at most " + std::to_string(kMaxColliders) + " colliders");
+    out.insert("colliders", std::move(o));
+  }
+  // [[loads]]
+  if (const toml::array* a = table_array("loads")) {
+    toml::array o;
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      toml::table lo;
+      TableReader r(ctx, *a->get(i)->as_table(), scene_section("loads"), "loads." + std::to_string(i), lo);
+      LoadSpec l;
+      l.region_min = r.vec3("region_min");
+      l.region_max = r.vec3("region_max");
+      for (int d = 0; d < 3; ++d)
+        if (!(l.region_max[d] > l.region_min[d])) r.fail("region_max", "must exceed region_min in every component");
+      l.force = r.vec3("force");
+      l.ramp_time = r.number("ramp_time");
+      r.finish();
+      s.loads.push_back(l);
+      o.push_back(std::move(lo));
+    }
+    out.insert("loads", std::move(o));
+  }
+  // [metrics], [render]
+  {
+    toml::table mo, ro;
+    TableReader(ctx, subtable(ctx, root, "metrics", empty), scene_section("metrics"), "metrics", mo).finish();
+    TableReader r(ctx, subtable(ctx, root, "render", empty), scene_section("render"), "render", ro);
+    s.render.style = r.choice("style");
+    s.render.color_by = r.choice("color_by");
+    s.render.width = int(r.integer("width"));
+    s.render.height = int(r.integer("height"));
+    s.render.fps = int(r.integer("fps"));
+    r.finish();
+    out.insert("render", std::move(ro));
+  }
+
+  std::ostringstream text;
+  text << "# " << s.name << ": resolved by firn from " << path
+       << " (every default and override filled in, SI units); run it as is to reproduce the run.\n"
+       << out << "\n";
+  loaded.resolved_toml = text.str();
+  return loaded;
+}
+
+}  // namespace firn

@@ -1,0 +1,112 @@
+#include "engine/scene/scene_run.hpp"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+
+#include "engine/output/atomic_file.hpp"
+#include "engine/output/vtp_writer.hpp"
+#include "engine/scene/scene_builder.hpp"
+#include "kernels/backend/openmp.hpp"
+
+namespace firn {
+namespace {
+
+void make_directory(const std::string& path) {
+  std::string partial;
+  std::stringstream parts(path);
+  for (std::string part; std::getline(parts, part, '/');) {
+    partial += part + "/";
+    if (part.empty()) continue;
+    if (::mkdir(partial.c_str(), 0755) != 0 && errno != EEXIST)
+      throw std::runtime_error("cannot create " + partial + ": " + std::strerror(errno));
+  }
+}
+
+std::string frame_name(int frame) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%05d", frame);
+  return buf;
+}
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+template <class T>
+RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
+  const auto wall0 = Clock::now();
+  const SceneSpec& scene = loaded.spec;
+  backend::OpenMP omp;
+  if (options.threads > 0) omp.thread_count = options.threads;
+  Simulation<T, backend::OpenMP> sim(scene.config, omp);
+  build_scene(scene, sim);
+  sim.prepare();
+
+  RunSummary summary;
+  summary.particles = sim.particle_count();
+  summary.threads = omp.threads();
+  summary.precision = scene.precision;
+
+  make_directory(options.out_dir + "/particles");
+  write_file_atomically(options.out_dir + "/scene.resolved.toml", loaded.resolved_toml);
+  std::string metrics =
+      "frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,max_speed,min_J\n";
+  auto write_frame = [&](int frame) {
+    const Diagnostics d = sim.diagnostics();
+    char row[512];
+    std::snprintf(row, sizeof row, "%d,%ld,%.9g,%.9g,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", frame, sim.steps(),
+                  sim.time(), sim.last_dt(), sim.particle_count(), d.kinetic_energy, d.elastic_energy, d.momentum[0],
+                  d.momentum[1], d.momentum[2], d.max_speed, d.min_J);
+    metrics += row;
+    write_particles_vtp(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
+    write_file_atomically(options.out_dir + "/metrics.csv", metrics);
+  };
+
+  const int frames = std::max(1, int(std::ceil(scene.end_time / scene.frame_interval - 1e-9)));
+  double step_seconds = 0;
+  try {
+    write_frame(0);
+    for (int f = 1; f <= frames; ++f) {
+      const double target = std::min(scene.end_time, f * scene.frame_interval);
+      while (sim.time() < target * (1 - 1e-12)) {
+        if (options.interrupt && options.interrupt->load()) throw std::runtime_error("interrupted");
+        const auto t0 = Clock::now();
+        sim.step(std::min(sim.next_dt(), target - sim.time()));
+        step_seconds += seconds_since(t0);
+        if (options.progress) options.progress({sim.time(), scene.end_time, sim.steps(), f, frames, step_seconds});
+      }
+      write_frame(f);
+    }
+  } catch (const StabilityError& e) {
+    summary.status = "unstable";
+    summary.error = e.what();
+  } catch (const std::exception& e) {
+    const bool interrupted = options.interrupt && options.interrupt->load();
+    summary.status = interrupted ? "interrupted" : "failed";
+    summary.error = interrupted ? "interrupted by a signal at t = " + std::to_string(sim.time()) + " s" : e.what();
+  }
+  summary.steps = sim.steps();
+  summary.simulated_time = sim.time();
+  summary.step_seconds = step_seconds;
+  char hash[20];
+  std::snprintf(hash, sizeof hash, "%016" PRIx64, sim.state_hash());
+  summary.state_hash = hash;
+  summary.peak_memory_mb = peak_memory_mb();
+  summary.wall_seconds = seconds_since(wall0);
+  write_file_atomically(options.out_dir + "/summary.json", summary.to_json());
+  return summary;
+}
+
+}  // namespace
+
+RunSummary run_scene(const LoadedScene& scene, const RunOptions& options) {
+  return scene.spec.precision == "double" ? run<double>(scene, options) : run<float>(scene, options);
+}
+
+}  // namespace firn

@@ -1,0 +1,35 @@
+// Runs a loaded scene to its end time and writes the outputs of DESIGN.md section 5 under the
+// output folder: scene.resolved.toml, metrics.csv (one row per frame), particles/NNNNN.vtp and
+// summary.json. Every file is written atomically; metrics.csv is rewritten at each frame, so it is
+// complete up to the last frame whatever happens. A stability-guard stop, an interrupt or an I/O
+// failure ends the run with summary.json saying why.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string>
+
+#include "engine/output/run_summary.hpp"
+#include "engine/scene/scene_reader.hpp"
+
+namespace firn {
+
+struct RunProgress {
+  double time, end_time;
+  long steps;
+  int frame, frames;
+  double step_seconds;  // spent in the step loop so far
+};
+
+struct RunOptions {
+  std::string out_dir;
+  int threads = 0;                                  // 0: all cores
+  const std::atomic<bool>* interrupt = nullptr;     // set from a signal handler to stop between steps
+  std::function<void(const RunProgress&)> progress;  // called after every step
+};
+
+// Builds the scene (throws SceneError before anything is written if a body has no particles),
+// then runs it. The summary's status says how it ended; its state_hash is that of the final state.
+RunSummary run_scene(const LoadedScene& scene, const RunOptions& options);
+
+}  // namespace firn

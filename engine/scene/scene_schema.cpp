@@ -1,0 +1,243 @@
+#include "engine/scene/scene_schema.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "engine/material_catalog.hpp"
+
+namespace firn {
+namespace {
+
+using Q = Quantity;
+using K = ValueKind;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+const std::vector<std::string> kBoundaries = {"sticky", "slip", "separate"};
+const std::vector<std::string> kWallTypes = {"none", "sticky", "slip", "separate"};
+
+KeySpec wall_face(const std::string& face) {
+  return {face, K::choice, Q::dimensionless, "", false, "boundary on the " + face + " face (default: `type`)",
+          -kInf, kInf, false, kWallTypes};
+}
+
+std::vector<SectionSpec> build_schema() {
+  std::vector<SectionSpec> s;
+  s.push_back({"simulation", false, "The domain, the grid, time stepping and the transfer scheme.",
+               {
+                   {"domain_min", K::vector3, Q::length, "", true, "lower corner of the domain box"},
+                   {"domain_max", K::vector3, Q::length, "", true, "upper corner of the domain box"},
+                   {"dx", K::number, Q::length, "", true, "grid cell size", 0, kInf, true},
+                   {"particles_per_cell", K::integer, Q::dimensionless, "8", false,
+                    "particles per grid cell on a regular lattice: 1, 8, 27 or 64", 1, 64},
+                   {"end_time", K::number, Q::time, "", true, "simulated time to run", 0, kInf, true},
+                   {"frame_interval", K::number, Q::time, "", false,
+                    "time between output frames (default: end_time / 100)", 0, kInf, true},
+                   {"cfl", K::number, Q::dimensionless, "0.4", false,
+                    "CFL number: dt = cfl dx / max(c_p + |v_p|)", 0, 1, true},
+                   {"dt_max", K::number, Q::time, "0.001", false, "largest time step", 0, kInf, true},
+                   {"fixed_dt", K::number, Q::time, "0.0", false,
+                    "when > 0, every step uses this time step instead of the CFL one", 0, kInf},
+                   {"gravity", K::vector3, Q::acceleration, "[0.0, -9.81, 0.0]", false, "gravitational acceleration"},
+                   {"transfer", K::choice, Q::dimensionless, "\"apic\"", false,
+                    "particle-grid transfer: apic (MLS-MPM), pic or flip (FLIP/PIC blend)", -kInf, kInf, false,
+                    {"apic", "pic", "flip"}},
+                   {"flip_alpha", K::number, Q::dimensionless, "0.95", false, "FLIP fraction of the flip blend", 0, 1},
+                   {"shape", K::choice, Q::dimensionless, "\"quadratic\"", false, "B-spline shape function",
+                    -kInf, kInf, false, {"quadratic", "cubic"}},
+                   {"precision", K::choice, Q::dimensionless, "\"float\"", false, "floating-point precision of the run",
+                    -kInf, kInf, false, {"float", "double"}},
+               }});
+  s.push_back({"walls", false,
+               "Domain walls: the nodes within `width` cells of a face get its boundary condition.",
+               {
+                   {"type", K::choice, Q::dimensionless, "\"separate\"", false,
+                    "boundary on every face: none, sticky (v = 0), slip (normal velocity removed) or separate "
+                    "(normal velocity removed only when approaching)",
+                    -kInf, kInf, false, kWallTypes},
+                   wall_face("x_min"), wall_face("x_max"), wall_face("y_min"), wall_face("y_max"),
+                   wall_face("z_min"), wall_face("z_max"),
+                   {"friction", K::number, Q::dimensionless, "0.0", false, "Coulomb friction coefficient of the walls",
+                    0, kInf},
+                   {"width", K::integer, Q::dimensionless, "3", false, "wall band thickness in cells", 1, 8},
+               }});
+
+  SectionSpec materials{"materials.NAME", false,
+                        "One table per material, named by the scene; bodies refer to it by NAME. Give `preset`, "
+                        "or `model`, `density` and two of E, nu, K, G. Keys given beside a preset override it; "
+                        "giving any of E, nu, K, G replaces all of the preset's moduli.",
+                        {
+                            {"preset", K::text, Q::dimensionless, "", false, "a named parameter set (see Presets)"},
+                            {"model", K::choice, Q::dimensionless, "", false, "constitutive model (required without a preset)"},
+                            {"density", K::number, Q::density, "", false, "rest density", 0, kInf, true},
+                            {"E", K::number, Q::pressure, "", false, "Young's modulus", 0, kInf, true},
+                            {"nu", K::number, Q::dimensionless, "", false, "Poisson's ratio", -1, 0.5, true},
+                            {"K", K::number, Q::pressure, "", false, "bulk modulus", 0, kInf, true},
+                            {"G", K::number, Q::pressure, "", false, "shear modulus", 0, kInf, true},
+                        }};
+  for (const MaterialModelSpec& m : material_model_specs()) {
+    materials.keys[1].choices.push_back(m.name);
+    for (const MaterialParameter& p : m.parameters) {
+      KeySpec k{p.key, p.choices.empty() ? K::number : K::choice, p.quantity, "", !p.default_value.has_value(),
+                p.doc, p.min, p.max, false, p.choices, m.name};
+      if (p.default_value) {
+        std::ostringstream text;
+        text.precision(17);
+        if (p.choices.empty()) text << *p.default_value;
+        else text << '"' << p.choices.at(std::size_t(*p.default_value)) << '"';
+        k.default_toml = text.str();
+      }
+      materials.keys.push_back(k);
+    }
+  }
+  s.push_back(materials);
+
+  const std::vector<KeySpec> geometry = {
+      {"shape", K::choice, Q::dimensionless, "", true,
+       "sphere, box, cylinder, union (of `parts`) or difference (first of `parts` minus the others)", -kInf, kInf,
+       false, {"sphere", "box", "cylinder", "union", "difference"}},
+      {"center", K::vector3, Q::length, "", true, "centre", -kInf, kInf, false, {}, "sphere"},
+      {"radius", K::number, Q::length, "", true, "radius", 0, kInf, true, {}, "sphere"},
+      {"min", K::vector3, Q::length, "", true, "lower corner", -kInf, kInf, false, {}, "box"},
+      {"max", K::vector3, Q::length, "", true, "upper corner", -kInf, kInf, false, {}, "box"},
+      {"center", K::vector3, Q::length, "", true, "centre", -kInf, kInf, false, {}, "cylinder"},
+      {"radius", K::number, Q::length, "", true, "radius", 0, kInf, true, {}, "cylinder"},
+      {"length", K::number, Q::length, "", true, "length along the axis", 0, kInf, true, {}, "cylinder"},
+      {"axis", K::choice, Q::dimensionless, "\"y\"", false, "axis direction", -kInf, kInf, false, {"x", "y", "z"},
+       "cylinder"},
+      {"parts", K::tables, Q::dimensionless, "", true, "array of shape tables (`bodies.parts` keys)", -kInf, kInf,
+       false, {}, "union"},
+      {"parts", K::tables, Q::dimensionless, "", true, "array of shape tables (`bodies.parts` keys)", -kInf, kInf,
+       false, {}, "difference"},
+  };
+  SectionSpec bodies{"bodies", true,
+                     "Solids filled with particles on the lattice of `particles_per_cell`, in file order; a body never "
+                     "takes lattice sites inside an earlier body, so concentric spheres make a layered ball.",
+                     {
+                         {"name", K::text, Q::dimensionless, "", false, "label used in messages"},
+                         {"material", K::text, Q::dimensionless, "", true, "NAME of a [materials.NAME] table"},
+                         {"velocity", K::vector3, Q::velocity, "[0.0, 0.0, 0.0]", false, "initial velocity"},
+                         {"angular_velocity", K::vector3, Q::angular_velocity, "[0.0, 0.0, 0.0]", false,
+                          "initial angular velocity about the body's centre of mass"},
+                         {"jitter", K::number, Q::dimensionless, "0.0", false,
+                          "random offset of each particle, as a fraction of the lattice spacing", 0, 1},
+                         {"seed", K::integer, Q::dimensionless, "0", false, "seed of the jitter", 0, kInf},
+                     }};
+  bodies.keys.insert(bodies.keys.end(), geometry.begin(), geometry.end());
+  s.push_back(bodies);
+  s.push_back({"bodies.parts", true, "A shape inside a union or difference (the same shape keys as a body).",
+               geometry});
+
+  s.push_back({"colliders", true, "Kinematic rigid solids that act on the grid.",
+               {
+                   {"name", K::text, Q::dimensionless, "", false, "label used in messages"},
+                   {"shape", K::choice, Q::dimensionless, "", true, "plane (a half-space) or box", -kInf, kInf, false,
+                    {"plane", "box"}},
+                   {"point", K::vector3, Q::length, "", true, "a point on the plane", -kInf, kInf, false, {}, "plane"},
+                   {"normal", K::vector3, Q::dimensionless, "", true, "normal pointing out of the solid", -kInf, kInf,
+                    false, {}, "plane"},
+                   {"min", K::vector3, Q::length, "", true, "lower corner at t = 0", -kInf, kInf, false, {}, "box"},
+                   {"max", K::vector3, Q::length, "", true, "upper corner at t = 0", -kInf, kInf, false, {}, "box"},
+                   {"velocity", K::vector3, Q::velocity, "[0.0, 0.0, 0.0]", false, "constant velocity"},
+                   {"boundary", K::choice, Q::dimensionless, "\"sticky\"", false,
+                    "sticky, slip or separate (see walls)", -kInf, kInf, false, kBoundaries},
+                   {"friction", K::number, Q::dimensionless, "0.0", false, "Coulomb friction coefficient", 0, kInf},
+               }});
+  s.push_back({"loads", true,
+               "A total force on the particles inside a box when the run starts, shared in proportion to mass.",
+               {
+                   {"region_min", K::vector3, Q::length, "", true, "lower corner of the region"},
+                   {"region_max", K::vector3, Q::length, "", true, "upper corner of the region"},
+                   {"force", K::vector3, Q::force, "", true, "total force"},
+                   {"ramp_time", K::number, Q::time, "0.0", false,
+                    "the force grows linearly from zero over this time (0: applied at once)", 0, kInf},
+               }});
+  s.push_back({"metrics", false, "Scene metrics beyond the standard metrics.csv columns (none yet).", {}});
+  s.push_back({"render", false, "How frames are drawn when rendering is on (`firn run --render`).",
+               {
+                   {"style", K::choice, Q::dimensionless, "\"spheres\"", false, "none, spheres or surface", -kInf,
+                    kInf, false, {"none", "spheres", "surface"}},
+                   {"color_by", K::choice, Q::dimensionless, "\"material\"", false, "colour by material or by a field",
+                    -kInf, kInf, false, {"material", "speed", "J", "plastic_strain", "stress"}},
+                   {"width", K::integer, Q::dimensionless, "1280", false, "image width in pixels", 16, 8192},
+                   {"height", K::integer, Q::dimensionless, "720", false, "image height in pixels", 16, 8192},
+                   {"fps", K::integer, Q::dimensionless, "30", false, "video frames per second", 1, 240},
+               }});
+  return s;
+}
+
+std::string unit_text(const KeySpec& k) {
+  if (k.kind == ValueKind::choice || k.kind == ValueKind::text || k.kind == ValueKind::tables ||
+      k.kind == ValueKind::boolean)
+    return "";
+  return si_unit(k.quantity);
+}
+
+const char* kind_text(ValueKind k) {
+  switch (k) {
+    case ValueKind::number: return "number";
+    case ValueKind::integer: return "integer";
+    case ValueKind::vector3: return "[x, y, z]";
+    case ValueKind::choice: return "choice";
+    case ValueKind::text: return "string";
+    case ValueKind::boolean: return "boolean";
+    case ValueKind::tables: return "array of tables";
+  }
+  return "";
+}
+
+std::string escape_bars(std::string s) {
+  for (std::size_t i = s.find('|'); i != std::string::npos; i = s.find('|', i + 2)) s.replace(i, 1, "\\|");
+  return s;
+}
+
+}  // namespace
+
+const std::vector<SectionSpec>& scene_schema() {
+  static const std::vector<SectionSpec> schema = build_schema();
+  return schema;
+}
+
+const SectionSpec& scene_section(const std::string& name) {
+  for (const auto& s : scene_schema())
+    if (s.name == name) return s;
+  throw std::logic_error("no scene section '" + name + "'");
+}
+
+std::string scene_reference_markdown() {
+  std::ostringstream md;
+  md << "# Scene file reference\n\n"
+        "Generated by `firn help scene-keys` from the table the scene validator uses "
+        "(engine/scene/scene_schema.cpp, engine/material_catalog.cpp); do not edit by hand.\n\n"
+        "Scene files are TOML. Numbers are SI; a string `\"VALUE UNIT\"` is converted, e.g. `\"70 mm\"`, "
+        "`\"0.4 g/cm^3\"`, `\"0.078 MPa\"`, `\"6000 mm/s\"`, `\"10 mph\"`, `\"0.5 ms\"`, `\"30 deg\"`; "
+        "a vector's components may each carry a unit. Keys marked *required* have no default; an "
+        "empty default means the key is optional.\n\n";
+  for (const SectionSpec& s : scene_schema()) {
+    md << "## " << (s.array ? "[[" : "[") << s.name << (s.array ? "]]" : "]") << "\n\n" << s.doc << "\n\n";
+    if (s.keys.empty()) continue;
+    md << "| key | for | type | unit | default | range / choices | meaning |\n|---|---|---|---|---|---|---|\n";
+    for (const KeySpec& k : s.keys) {
+      std::ostringstream range;
+      if (!k.choices.empty()) {
+        for (std::size_t i = 0; i < k.choices.size(); ++i) range << (i ? ", " : "") << k.choices[i];
+      } else if (k.min > -kInf || k.max < kInf) {
+        range << (k.min_exclusive || k.min == -kInf ? "(" : "[") << k.min << ", " << k.max << (k.max == kInf ? ")" : "]");
+      }
+      md << "| `" << k.key << "` | " << k.applies_to << " | " << kind_text(k.kind) << " | " << unit_text(k) << " | "
+         << (k.required ? "*required*" : escape_bars(k.default_toml)) << " | " << escape_bars(range.str()) << " | "
+         << escape_bars(k.doc) << " |\n";
+    }
+    md << "\n";
+  }
+  md << "## Material presets\n\nUse as `preset = \"NAME\"` in a `[materials.NAME]` table.\n\n"
+        "| preset | model | values (SI) | source |\n|---|---|---|---|\n";
+  for (const MaterialPreset& p : material_presets()) {
+    md << "| `" << p.name << "` | " << p.model << " | ";
+    bool first = true;
+    for (const auto& [key, value] : p.values) md << (first ? "" : ", ") << key << " = " << value, first = false;
+    md << " | " << escape_bars(p.doc) << " |\n";
+  }
+  return md.str();
+}
+
+}  // namespace firn
