@@ -13,13 +13,18 @@
 #include <variant>
 
 #include "engine/elastic_moduli.hpp"
+#include "engine/material_catalog.hpp"
 #include "kernels/constitutive/fixed_corotated.hpp"
+#include "kernels/constitutive/hyperelastic_plastic.hpp"
+#include "kernels/constitutive/mooney_rivlin.hpp"
 #include "kernels/constitutive/neo_hookean.hpp"
+#include "kernels/constitutive/snow_stomakhin.hpp"
 
 namespace firn {
 
 template <class T>
-using MaterialModel = std::variant<NeoHookean<T>, FixedCorotated<T>>;
+using MaterialModel =
+    std::variant<NeoHookean<T>, FixedCorotated<T>, MooneyRivlin<T>, HyperelasticPlastic<T>, SnowStomakhin<T>>;
 
 struct MaterialInfo {
   std::string name;
@@ -37,11 +42,38 @@ struct MaterialInfo {
   }
 };
 
+// A model parameter: the material's own value, else the catalog's default (material_catalog.cpp).
+inline double material_param(const MaterialInfo& info, const std::string& key) {
+  if (info.params.count(key)) return info.params.at(key);
+  if (const MaterialModelSpec* spec = find_material_model(info.model))
+    for (const MaterialParameter& p : spec->parameters)
+      if (p.key == key && p.default_value) return *p.default_value;
+  return info.param(key);  // throws, naming the key
+}
+
 template <class T>
 MaterialModel<T> make_material_model(const MaterialInfo& info) {
   const ElasticModuli& m = info.moduli;
+  const auto param = [&](const char* key) { return T(material_param(info, key)); };
   if (info.model == NeoHookean<T>::kName) return NeoHookean<T>{T(m.mu()), T(m.lambda())};
   if (info.model == FixedCorotated<T>::kName) return FixedCorotated<T>{T(m.mu()), T(m.lambda())};
+  if (info.model == MooneyRivlin<T>::kName || info.model == HyperelasticPlastic<T>::kName) {
+    // G from the elastic moduli is the small-strain shear modulus G1 + G2.
+    const double G2 = material_param(info, "G2");
+    if (!(G2 < m.G)) throw std::invalid_argument("material '" + info.name + "': G2 must be below the shear modulus G");
+    const MooneyRivlin<T> elastic{T(m.K), T(m.G - G2), T(G2)};
+    if (info.model == MooneyRivlin<T>::kName) return elastic;
+    const J2Hardening<T> hardening{HardeningLaw(int(material_param(info, "hardening"))),
+                                   param("sigma_y0"),
+                                   param("E_p"),
+                                   param("K_h"),
+                                   param("n"),
+                                   param("sigma_y_min")};
+    return HyperelasticPlastic<T>{elastic, hardening};
+  }
+  if (info.model == SnowStomakhin<T>::kName)
+    return SnowStomakhin<T>{T(m.mu()),        T(m.lambda()),   param("xi"),    param("theta_c"),
+                            param("theta_s"), param("Jp_min"), param("Jp_max")};
   throw std::invalid_argument("unknown material model '" + info.model + "'");
 }
 

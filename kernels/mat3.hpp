@@ -88,6 +88,18 @@ FIRN_HD T determinant(const Mat3<T>& a) {
   return a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0)) +
          a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0));
 }
+// a^{-1} as adjugate / det (no check for singular a).
+template <class T>
+FIRN_HD Mat3<T> inverse(const Mat3<T>& a) {
+  const T inv_det = T(1) / determinant(a);
+  Mat3<T> r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      r(i, j) = (a(j1, i1) * a(j2, i2) - a(j1, i2) * a(j2, i1)) * inv_det;  // cofactor of a(j, i)
+    }
+  return r;
+}
 template <class T>
 FIRN_HD T trace(const Mat3<T>& a) { return a(0, 0) + a(1, 1) + a(2, 2); }
 // Frobenius inner product A : B.

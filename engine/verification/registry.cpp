@@ -4,12 +4,23 @@
 
 namespace firn {
 
-std::vector<std::string> verification_problems() { return {"vibrating_bar", "manufactured_solution", "two_spheres"}; }
+namespace {
+const char* const kDriverPrefix = "material_driver_";
+const char* const kDriverModels[] = {"hyperelastic_plastic", "snow_stomakhin", "mooney_rivlin"};
+}  // namespace
+
+std::vector<std::string> verification_problems() {
+  std::vector<std::string> names = {"vibrating_bar", "manufactured_solution", "two_spheres"};
+  for (const char* model : kDriverModels) names.push_back(kDriverPrefix + std::string(model));
+  return names;
+}
 
 std::vector<VerificationRow> run_verification(const std::string& problem, const VerificationOptions& options) {
   if (problem == "vibrating_bar") return verify_vibrating_bar(options);
   if (problem == "manufactured_solution") return verify_manufactured_solution(options);
   if (problem == "two_spheres") return verify_two_spheres(options);
+  for (const char* model : kDriverModels)
+    if (problem == kDriverPrefix + std::string(model)) return verify_material_driver(model);
   throw std::invalid_argument("unknown verification problem '" + problem + "'");
 }
 

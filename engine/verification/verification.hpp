@@ -44,4 +44,9 @@ std::vector<VerificationRow> verify_manufactured_solution(const VerificationOpti
 // transfer scheme; the energy history goes to the log.
 std::vector<VerificationRow> verify_two_spheres(const VerificationOptions& options);
 
+// Material-point driver (engine/material_driver.hpp) for one constitutive model ("hyperelastic_plastic",
+// "snow_stomakhin", "mooney_rivlin"): closed forms, yield surface and J_P bookkeeping after every
+// return, sub-stepped references, objectivity. One row per check.
+std::vector<VerificationRow> verify_material_driver(const std::string& model);
+
 }  // namespace firn

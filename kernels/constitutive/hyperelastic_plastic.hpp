@@ -1,0 +1,115 @@
+// Isotropic hyperelastic-plastic material (thesis Eq. 4.1-4.5; NairnMPM "HEIsotropic"; DESIGN.md
+// section 4): Mooney-Rivlin elasticity of the elastic left Cauchy-Green tensor b_e = F_E F_E^T
+// (kernels/constitutive/mooney_rivlin.hpp, G1 = G - G2), J2 plasticity with isotropic hardening
+// (kernels/constitutive/j2_hardening.hpp) integrated by the radial return of Simo and Hughes,
+// Computational Inelasticity, Box 9.1.
+//
+// Storage: the engine's F holds F_E. Plastic flow is isochoric, so J = det F_E is the total J.
+//
+// Return mapping (Box 9.1), with bbar = J^(-2/3) b_e and s = G1 dev(bbar_e) the deviatoric
+// Kirchhoff stress of the G1 part:
+//   1. trial: s_tr = G1 dev(bbar_tr), f_tr = ||s_tr|| - sqrt(2/3) sigma_y(alpha_n); f_tr <= 0: elastic.
+//   2. mu_bar = G1 tr(bbar_tr) / 3, n = s_tr / ||s_tr||, dgamma from the consistency equation
+//      (solve_j2_return), s = s_tr - 2 mu_bar dgamma n = (1 - beta) s_tr, beta = 2 mu_bar dgamma / ||s_tr||,
+//      alpha_{n+1} = alpha_n + sqrt(2/3) dgamma.
+//   3. elastic update consistent with s at any J. Box 9.1 step 4 reads bbar_e = s / G1 + (tr(bbar_tr)/3) I.
+//      Multiplying by J^(2/3): dev(b_e) = J^(2/3) s / G1 = (1 - beta) dev(b_tr). A code that keeps the
+//      Cauchy stress sigma = tau / J must write dev(b_e) = J^(5/3) dev(sigma) / G1; dropping that factor
+//      J^(5/3) (issue 4 reports this of NairnMPM's HEIsotropic) leaves dev(b_e) too large by J^(-5/3),
+//      7.4x at J = 0.3, so the next stress lands far outside the yield surface and compacted snow
+//      diverges. Here the update acts on b_e itself, where the factor never appears.
+//      Box 9.1's trace keeps tr(bbar_e) but not det(bbar_e) = 1, i.e. it would change J. The stress
+//      depends on b_e only through J and dev(b_e), so the trace part is free: it is set to the x with
+//      det(x I + (1 - beta) dev(bbar_tr)) = 1 (the volume-preserving variant of step 4, cf. Simo 1992,
+//      CMAME 99:61-112), which keeps J and s exactly. Since b_e and b_tr share
+//      eigenvectors, F_E = U diag(sigma_i) V^T with F_tr = U diag(sigma_tr_i) V^T (svd3) and
+//      sigma_i = J^(1/3) sqrt(x + (1 - beta) d_i), d_i the principal values of dev(bbar_tr).
+// The elastic path costs one F F^T and no SVD.
+//
+// G2 != 0: the elastic response is the full Mooney-Rivlin one, but the yield function and the
+// return above use only the G1 part s = G1 dev(bbar_e): after a return the G1 part of the
+// deviatoric stress lies on the yield surface and the G2 part, G2 J^(-4/3) dev(I1 b_e - b_e^2), is
+// whatever the returned b_e gives. With G2 = 0 (the thesis' snow) the return is exact.
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include "kernels/constitutive/j2_hardening.hpp"
+#include "kernels/constitutive/mooney_rivlin.hpp"
+#include "kernels/constitutive/plastic_state.hpp"
+#include "kernels/hd.hpp"
+#include "kernels/mat3.hpp"
+#include "kernels/svd3.hpp"
+
+namespace firn {
+
+template <class T>
+struct HyperelasticPlastic {
+  static constexpr const char* kName = "hyperelastic_plastic";
+  static constexpr bool kPlastic = true, kUsesAlpha = true, kUsesJp = false;
+  MooneyRivlin<T> elastic;
+  J2Hardening<T> hardening;
+
+  FIRN_HD T p_wave_modulus(const PlasticState<T>& = {}) const { return elastic.p_wave_modulus(); }
+  FIRN_HD Mat3<T> kirchhoff(const Mat3<T>& F, const PlasticState<T>& = {}) const { return elastic.kirchhoff(F); }
+  FIRN_HD T energy_density(const Mat3<T>& F, const PlasticState<T>& = {}) const { return elastic.energy_density(F); }
+
+  // ||s_tr|| - sqrt(2/3) sigma_y(alpha) for the G1 part of the stress (step 1 above); <= 0 is admissible.
+  FIRN_HD T yield_function(const Mat3<T>& F, const PlasticState<T>& state) const {
+    const Mat3<T> b = mul_transposed(F, F);
+    const T J = determinant(F);
+    const T Jm23 = T(1) / (std::cbrt(J) * std::cbrt(J));
+    Mat3<T> dev = b;
+    const T mean = trace(b) / T(3);
+    for (int d = 0; d < 3; ++d) dev(d, d) -= mean;
+    return elastic.G1 * Jm23 * std::sqrt(ddot(dev, dev)) - std::sqrt(T(2) / T(3)) * hardening.yield_stress(state.alpha);
+  }
+
+  FIRN_HD void project(Mat3<T>& F, PlasticState<T>& state) const {
+    const T J = determinant(F);
+    if (!(J > T(0))) return;  // inverted or NaN: left for the stability guard to name
+    const Mat3<T> b = mul_transposed(F, F);
+    const T Jm23 = T(1) / (std::cbrt(J) * std::cbrt(J));
+    const T Ibar = Jm23 * trace(b) / T(3);
+    Mat3<T> dev = b;
+    for (int d = 0; d < 3; ++d) dev(d, d) -= trace(b) / T(3);
+    const T s_norm = elastic.G1 * Jm23 * std::sqrt(ddot(dev, dev));
+    const T sqrt23 = std::sqrt(T(2) / T(3));
+    if (s_norm - sqrt23 * hardening.yield_stress(state.alpha) <= T(0)) return;  // step 1: elastic
+
+    // Step 2: radial return.
+    const T mu_bar = elastic.G1 * Ibar;
+    const T dgamma = solve_j2_return(hardening, state.alpha, s_norm, mu_bar).dgamma;
+    const T keep = T(1) - T(2) * mu_bar * dgamma / s_norm;  // 1 - beta
+    state.alpha += sqrt23 * dgamma;
+
+    // Step 3: principal values c_i = (1 - beta) d_i of the returned dev(bbar_e), then the trace part
+    // x with prod(x + c_i) = 1. h(x) = prod(x + c_i) - 1 is increasing and convex where all factors
+    // are positive, and h(Ibar) >= 0 (for fixed trace the product grows as the deviation shrinks), so
+    // Newton from x = Ibar decreases monotonically to the root without leaving that region.
+    Mat3<T> U, V;
+    Vec3<T> sig;
+    svd3(F, U, sig, V);
+    Vec3<T> c;
+    for (int d = 0; d < 3; ++d) c[d] = keep * (Jm23 * sig[d] * sig[d] - Ibar);
+    T x = Ibar;
+    for (int it = 0; it < 32; ++it) {
+      const T a0 = x + c[0], a1 = x + c[1], a2 = x + c[2];
+      const T h = a0 * a1 * a2 - T(1);
+      const T step = h / (a0 * a1 + a1 * a2 + a0 * a2);
+      x -= step;
+      if (!(step > T(4) * std::numeric_limits<T>::epsilon() * x)) break;
+    }
+    Vec3<T> s_new;
+    for (int d = 0; d < 3; ++d) s_new[d] = std::sqrt(x + c[d]);
+    // Rescale by (J / prod)^(1/3): J^(1/3) from bbar -> b_e, and the rounding left in prod(x + c_i).
+    const T scale = std::cbrt(J / (s_new[0] * s_new[1] * s_new[2]));
+    Mat3<T> US = U;
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) US(r, k) *= scale * s_new[k];
+    F = mul_transposed(US, V);
+  }
+};
+
+}  // namespace firn
