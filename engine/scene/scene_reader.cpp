@@ -88,18 +88,23 @@ struct Context {
 // (defaults included) into `out`. finish() rejects the keys nobody read.
 class TableReader {
  public:
+  // `positions`: the table as parsed from the file, when `table` is a merged copy (a material
+  // with a preset) whose nodes have lost their file positions.
   TableReader(const Context& ctx, const toml::table& table, const SectionSpec& section, std::string prefix,
-              toml::table& out)
-      : ctx_(ctx), table_(table), section_(section), prefix_(std::move(prefix)), out_(out) {}
+              toml::table& out, const toml::table* positions = nullptr)
+      : ctx_(ctx), table_(table), positions_(positions ? *positions : table), section_(section),
+        prefix_(std::move(prefix)), out_(out) {}
 
   void set_filter(const std::string& f) { filter_ = f; }
   bool has(const std::string& key) const { return table_.contains(key); }
   std::string full(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
   const toml::source_region& source() const { return table_.source(); }
   [[noreturn]] void fail(const std::string& key, const std::string& message) const {
-    ctx_.fail(table_.get(key), table_.source(), full(key), message);
+    ctx_.fail(positions_.get(key), positions_.source(), full(key), message);
   }
-  std::string where(const std::string& key) const { return ctx_.where(table_.get(key), table_.source(), full(key)); }
+  std::string where(const std::string& key) const {
+    return ctx_.where(positions_.get(key), positions_.source(), full(key));
+  }
 
   double number(const std::string& key) {
     const KeySpec& k = spec(key);
@@ -182,8 +187,8 @@ class TableReader {
         if (k.applies_to.empty() || k.applies_to == filter_) applicable.push_back(k.key);
         else if (k.key == key) elsewhere = true;
       }
-      if (elsewhere) ctx_.fail(&node, table_.source(), full(key), "does not apply to '" + filter_ + "'");
-      ctx_.fail(&node, table_.source(), full(key), "unknown key" + suggestion(key, applicable));
+      if (elsewhere) fail(key, "does not apply to '" + filter_ + "'");
+      fail(key, "unknown key" + suggestion(key, applicable));
     }
   }
 
@@ -211,29 +216,31 @@ class TableReader {
       try {
         return parse_quantity(n.as_string()->get(), k.quantity);
       } catch (const std::invalid_argument& e) {
-        ctx_.fail(&n, table_.source(), full(key), e.what());
+        fail(key, e.what());
       }
     }
-    ctx_.fail(&n, table_.source(), full(key),
-              std::string("expected a ") + quantity_name(k.quantity) +
+    fail(key, std::string("expected a ") + quantity_name(k.quantity) +
                   (k.quantity == Quantity::dimensionless ? "" : std::string(" (") + si_unit(k.quantity) + ")") +
                   ", got " + type_name(n));
   }
   void check_range(const KeySpec& k, const std::string& key, double v) const {
     if (!std::isfinite(v)) fail(key, "must be finite");
     const bool below = k.min_exclusive ? !(v > k.min) : !(v >= k.min);
-    if (below || !(v <= k.max)) {
+    const bool above = k.max_exclusive ? !(v < k.max) : !(v <= k.max);
+    if (below || above) {
       std::string r;
       if (k.max == std::numeric_limits<double>::infinity())
         r = std::string(k.min_exclusive ? "> " : ">= ") + number_text(k.min);
       else
-        r = "in " + std::string(k.min_exclusive ? "(" : "[") + number_text(k.min) + ", " + number_text(k.max) + "]";
+        r = "in " + std::string(k.min_exclusive ? "(" : "[") + number_text(k.min) + ", " + number_text(k.max) +
+            (k.max_exclusive ? ")" : "]");
       fail(key, "must be " + r + " (got " + number_text(v) + ")");
     }
   }
 
   const Context& ctx_;
   const toml::table& table_;
+  const toml::table& positions_;
   const SectionSpec& section_;
   std::string prefix_;
   toml::table& out_;
@@ -364,7 +371,7 @@ MaterialInfo read_material(const Context& ctx, const std::string& name, const to
       else merged.insert(key, value);
     }
   }
-  TableReader r(ctx, merged, scene_section("materials.NAME"), prefix, out);
+  TableReader r(ctx, merged, scene_section("materials.NAME"), prefix, out, &given);
   r.text("preset");
   out.erase("preset");  // the resolved scene spells the values out
   if (!merged.contains("model")) r.fail("model", "missing (give `model` or `preset`)");

@@ -1,5 +1,6 @@
 #include "engine/scene/scene_schema.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -70,7 +71,7 @@ std::vector<SectionSpec> build_schema() {
                             {"model", K::choice, Q::dimensionless, "", false, "constitutive model (required without a preset)"},
                             {"density", K::number, Q::density, "", false, "rest density", 0, kInf, true},
                             {"E", K::number, Q::pressure, "", false, "Young's modulus", 0, kInf, true},
-                            {"nu", K::number, Q::dimensionless, "", false, "Poisson's ratio", -1, 0.5, true},
+                            {"nu", K::number, Q::dimensionless, "", false, "Poisson's ratio", -1, 0.5, true, {}, {}, true},
                             {"K", K::number, Q::pressure, "", false, "bulk modulus", 0, kInf, true},
                             {"G", K::number, Q::pressure, "", false, "shear modulus", 0, kInf, true},
                         }};
@@ -221,7 +222,8 @@ std::string scene_reference_markdown() {
       if (!k.choices.empty()) {
         for (std::size_t i = 0; i < k.choices.size(); ++i) range << (i ? ", " : "") << k.choices[i];
       } else if (k.min > -kInf || k.max < kInf) {
-        range << (k.min_exclusive || k.min == -kInf ? "(" : "[") << k.min << ", " << k.max << (k.max == kInf ? ")" : "]");
+        range << (k.min_exclusive || k.min == -kInf ? "(" : "[") << k.min << ", " << k.max
+              << (k.max_exclusive || k.max == kInf ? ")" : "]");
       }
       md << "| `" << k.key << "` | " << k.applies_to << " | " << kind_text(k.kind) << " | " << unit_text(k) << " | "
          << (k.required ? "*required*" : escape_bars(k.default_toml)) << " | " << escape_bars(range.str()) << " | "
@@ -234,7 +236,15 @@ std::string scene_reference_markdown() {
   for (const MaterialPreset& p : material_presets()) {
     md << "| `" << p.name << "` | " << p.model << " | ";
     bool first = true;
-    for (const auto& [key, value] : p.values) md << (first ? "" : ", ") << key << " = " << value, first = false;
+    const MaterialModelSpec* model = find_material_model(p.model);
+    for (const auto& [key, value] : p.values) {
+      md << (first ? "" : ", ") << key << " = ";
+      first = false;
+      const auto param = std::find_if(model->parameters.begin(), model->parameters.end(),
+                                      [&](const MaterialParameter& q) { return q.key == key; });
+      if (param != model->parameters.end() && !param->choices.empty()) md << param->choices.at(std::size_t(value));
+      else md << value;
+    }
     md << " | " << escape_bars(p.doc) << " |\n";
   }
   return md.str();

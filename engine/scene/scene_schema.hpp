@@ -26,6 +26,7 @@ struct KeySpec {
   bool min_exclusive = false;
   std::vector<std::string> choices = {};
   std::string applies_to = {};  // only for this shape / model ("" for all)
+  bool max_exclusive = false;
 };
 
 struct SectionSpec {
