@@ -224,7 +224,9 @@ class TableReader {
                   ", got " + type_name(n));
   }
   void check_range(const KeySpec& k, const std::string& key, double v) const {
-    if (!std::isfinite(v)) fail(key, "must be finite");
+    // Infinity only where it is the default, meaning "no limit" (e.g. Jp_max).
+    const bool unlimited = std::isinf(v) && (k.default_toml == "inf" || k.default_toml == "-inf");
+    if (!std::isfinite(v) && !unlimited) fail(key, "must be finite");
     const bool below = k.min_exclusive ? !(v > k.min) : !(v >= k.min);
     const bool above = k.max_exclusive ? !(v < k.max) : !(v <= k.max);
     if (below || above) {
@@ -391,6 +393,11 @@ MaterialInfo read_material(const Context& ctx, const std::string& name, const to
   for (const MaterialParameter& p : find_material_model(info.model)->parameters)
     info.params[p.key] = p.choices.empty() ? r.number(p.key) : double(r.choice_index(p.key));
   r.finish();
+  try {  // constraints between parameters (e.g. G2 < G) are the factory's to check
+    make_material_model<double>(info);
+  } catch (const std::invalid_argument& e) {
+    r.fail("model", e.what());
+  }
   return info;
 }
 

@@ -1,0 +1,188 @@
+// Scene format: unit conversion, validation messages, --set overrides, presets, layered bodies,
+// the resolved scene, and the colliders and loads a scene adds to the engine.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "engine/scene/scene_builder.hpp"
+#include "engine/scene/scene_reader.hpp"
+#include "engine/units.hpp"
+#include "kernels/backend/serial.hpp"
+
+namespace firn {
+namespace {
+
+const std::string kScenes = FIRN_SOURCE_DIR "/scenes/";
+
+TEST(Units, ConvertsTheThesisSpellings) {
+  EXPECT_DOUBLE_EQ(parse_quantity("70 mm", Quantity::length), 0.07);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.4 g/cm^3", Quantity::density), 400);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.078 MPa", Quantity::pressure), 78000);
+  EXPECT_DOUBLE_EQ(parse_quantity("6000 mm/s", Quantity::velocity), 6);
+  EXPECT_DOUBLE_EQ(parse_quantity("10 mph", Quantity::velocity), 4.4704);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.5 ms", Quantity::time), 5e-4);
+  EXPECT_DOUBLE_EQ(parse_quantity("30 deg", Quantity::angle), M_PI / 6);
+  EXPECT_DOUBLE_EQ(parse_quantity("  2.5  ", Quantity::length), 2.5);
+}
+
+TEST(Units, RejectsAUnitOfAnotherQuantityOrAnUnknownOne) {
+  try {
+    parse_quantity("5 kg", Quantity::length);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("measures mass, expected length"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse_quantity("5 parsecs", Quantity::length), std::invalid_argument);
+  EXPECT_THROW(parse_quantity("mm", Quantity::length), std::invalid_argument);
+}
+
+TEST(SceneReader, ReadsSnowballPairWithPresetsAndUnits) {
+  const SceneSpec s = load_scene(kScenes + "snowball_pair.toml", {}).spec;
+  EXPECT_DOUBLE_EQ(s.config.dx, 0.002);
+  EXPECT_DOUBLE_EQ(s.end_time, 0.01);
+  ASSERT_EQ(s.materials.size(), 3u);
+  const MaterialInfo& core = s.materials[0];  // tables are read in name order: core, middle, shell
+  EXPECT_EQ(core.name, "core");
+  EXPECT_EQ(core.model, "hyperelastic_plastic");
+  EXPECT_DOUBLE_EQ(core.density, 330);
+  EXPECT_DOUBLE_EQ(core.moduli.K, 26700);
+  EXPECT_DOUBLE_EQ(core.moduli.G, 20000);
+  EXPECT_DOUBLE_EQ(core.param("K_h"), 10);
+  EXPECT_DOUBLE_EQ(s.bodies[0].velocity[0], 6);
+}
+
+TEST(SceneReader, OverridesAnyKeyIncludingUnquotedStringsAndArrayElements) {
+  SceneOptions o;
+  o.overrides = {"simulation.dx=0.004", "bodies.1.velocity=[1, 2, 3]", "materials.core.preset=thesis_stomakhin_snow",
+                 "materials.middle.K_h=20", "render.style=surface", "simulation.end_time=3 ms"};
+  const SceneSpec s = load_scene(kScenes + "snowball_pair.toml", o).spec;
+  EXPECT_DOUBLE_EQ(s.config.dx, 0.004);
+  EXPECT_DOUBLE_EQ(s.bodies[1].velocity[2], 3);
+  EXPECT_EQ(s.materials[0].model, "snow_stomakhin");
+  EXPECT_DOUBLE_EQ(s.materials[1].param("K_h"), 20);
+  EXPECT_DOUBLE_EQ(s.materials[1].param("sigma_y0"), 100);  // the rest of the preset stays
+  EXPECT_EQ(s.render.style, "surface");
+  EXPECT_DOUBLE_EQ(s.end_time, 0.003);
+}
+
+TEST(SceneReader, AnOverrideIsValidatedAndNamedInTheMessage) {
+  SceneOptions o;
+  o.overrides = {"simulation.cfl=7"};
+  try {
+    load_scene(kScenes + "snowball_pair.toml", o);
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "--set simulation.cfl=7: simulation.cfl: must be in (0, 1] (got 7)");
+  }
+}
+
+TEST(SceneReader, PreviewDoublesDxAndThinsParticles) {
+  SceneOptions o;
+  o.preview = true;
+  const SceneSpec s = load_scene(kScenes + "snowball_pair.toml", o).spec;
+  EXPECT_DOUBLE_EQ(s.config.dx, 0.004);
+  EXPECT_EQ(s.particles_per_cell, 1);
+}
+
+TEST(SceneReader, TheResolvedSceneReadsBackToTheSameValues) {
+  const LoadedScene a = load_scene(kScenes + "snowball_pair.toml", {});
+  const std::string path = testing::TempDir() + "/resolved.toml";
+  std::ofstream(path) << a.resolved_toml;
+  const LoadedScene b = load_scene(path, {});
+  EXPECT_EQ(a.resolved_toml.substr(a.resolved_toml.find('\n')), b.resolved_toml.substr(b.resolved_toml.find('\n')));
+  EXPECT_EQ(a.spec.config.dx, b.spec.config.dx);
+  EXPECT_EQ(a.spec.materials[2].moduli.E, b.spec.materials[2].moduli.E);
+  EXPECT_EQ(a.spec.bodies[3].shape.center, b.spec.bodies[3].shape.center);
+  std::remove(path.c_str());
+}
+
+// Concentric layers take disjoint lattice sites whose union is the outer sphere's.
+TEST(SceneBuilder, LayeredSpheresPartitionTheOuterSphere) {
+  SceneSpec s = load_scene(kScenes + "snowball_pair.toml", {}).spec;
+  std::vector<Point> x, v;
+  std::size_t layers = 0;
+  for (std::size_t b = 0; b < 3; ++b) {
+    fill_body(s, b, x, v);
+    layers += x.size();
+  }
+  s.bodies.resize(1);
+  s.bodies[0].shape.radius = 0.035;
+  fill_body(s, 0, x, v);
+  EXPECT_EQ(layers, x.size());
+  EXPECT_GT(layers, 150000u);
+}
+
+TEST(SceneBuilder, AngularVelocitySpinsAboutTheCentreOfMass) {
+  SceneSpec s = load_scene(kScenes + "snowball_pair.toml", {}).spec;
+  s.bodies[0].velocity = {0, 0, 0};
+  s.bodies[0].angular_velocity = {0, 0, 10};
+  std::vector<Point> x, v;
+  fill_body(s, 0, x, v);
+  double p[3] = {0, 0, 0}, L = 0, I = 0;
+  Point c = {0, 0, 0};  // centre of mass of the particles
+  for (const Point& q : x)
+    for (int d = 0; d < 3; ++d) c[d] += q[d] / double(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    for (int d = 0; d < 3; ++d) p[d] += v[i][d];
+    const double rx = x[i][0] - c[0], ry = x[i][1] - c[1];
+    L += rx * v[i][1] - ry * v[i][0];
+    I += rx * rx + ry * ry;
+  }
+  const double round_off = 1e-13 * double(x.size());  // sums of ~0.1 m/s terms
+  EXPECT_NEAR(p[0], 0, round_off);
+  EXPECT_NEAR(p[1], 0, round_off);
+  EXPECT_NEAR(L / I, 10, 1e-9);
+}
+
+TEST(Colliders, BoxDistanceAndNormalAreExact) {
+  Collider<double> box;
+  box.shape = ColliderShape::box;
+  for (int d = 0; d < 3; ++d) box.min[d] = 0, box.max[d] = 1;
+  box.velocity[0] = 2;  // at t = 0.5 the box spans x in [1, 2]
+  double n[3];
+  const double outside[3] = {3, 0.5, 0.5}, corner[3] = {3, 2, 0.5}, inside[3] = {1.9, 0.5, 0.5};
+  EXPECT_DOUBLE_EQ(box.distance(outside, 0.5, n), 1);
+  EXPECT_DOUBLE_EQ(n[0], 1);
+  EXPECT_DOUBLE_EQ(box.distance(corner, 0.5, n), std::sqrt(2.0));
+  EXPECT_NEAR(box.distance(inside, 0.5, n), -0.1, 1e-12);
+  EXPECT_DOUBLE_EQ(n[0], 1);
+}
+
+TEST(Colliders, AStickyMovingPlaneImposesItsVelocity) {
+  Collider<double> plane;  // the solid is y < t (moving up at 1 m/s)
+  plane.velocity[1] = 1;
+  double v[3] = {3, -2, 1};
+  const double x_in[3] = {0, 0.4, 0}, x_out[3] = {0, 0.6, 0};
+  plane.apply(v, x_out, 0.5);
+  EXPECT_EQ(v[0], 3);
+  plane.apply(v, x_in, 0.5);
+  EXPECT_EQ(v[0], 0);
+  EXPECT_EQ(v[1], 1);
+  EXPECT_EQ(v[2], 0);
+}
+
+// A load spreads its total force over the particles in its region: sum m a = F, ramped.
+TEST(Loads, TotalForceIsSharedByMassAndRamped) {
+  SimulationConfig c;
+  c.gravity = {0, 0, 0};
+  Simulation<double, backend::Serial> sim(c);
+  sim.add_material({"snow", "neo_hookean", 400, ElasticModuli::from_E_nu(1e5, 0.2)});
+  sim.add_particles(0, fill_box({0, 0, 0}, 0.01, 2, {0.3, 0.3, 0.3}, {0.5, 0.4, 0.4}), {0, 0, 0}, 1.25e-7);
+  sim.add_load({0.45, 0.3, 0.3}, {0.5, 0.4, 0.4}, {0.01, 0, 0}, 1e-3);
+  auto total = [&] {
+    const ParticleView<double> pv = sim.particles();
+    double f = 0;
+    for (std::size_t p = 0; p < pv.n; ++p) f += pv.mass[p] * pv.body_accel[0][p];
+    return f;
+  };
+  sim.step(2.5e-4);
+  EXPECT_NEAR(total(), 0.01 * 0.25, 1e-15);
+  sim.advance_to(2e-3);
+  EXPECT_NEAR(total(), 0.01, 1e-15);
+}
+
+}  // namespace
+}  // namespace firn
