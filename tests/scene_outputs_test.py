@@ -148,6 +148,18 @@ def test_interrupt():
     check(len(metrics(out)) == len(frames), "metrics.csv rows and frames disagree after the interrupt")
 
 
+def test_unstable():
+    out = fresh("unstable")
+    # A fixed time step far above the CFL limit: the stability guard must stop the run.
+    r = run(["run", SCENE, "--preview", "--out", out, "--set", "simulation.fixed_dt=2 ms"])
+    check(r.returncode == 1, f"exit status {r.returncode} for an unstable run: {r.stderr}")
+    check(r.stderr.count("\n") == 1 and "stability guard" in r.stderr, f"stderr: {r.stderr}")
+    s = summary(out)
+    check(s["status"] == "unstable" and "particle" in s["error"], f"summary: {s}")
+    with open(os.path.join(out, "metrics.csv")) as f:
+        check("nan" not in f.read().lower(), "a NaN reached metrics.csv")
+
+
 def test_docs():
     r = run(["help", "scene-keys"])
     with open(os.path.join(ROOT, "docs", "scenes.md")) as f:
