@@ -7,7 +7,8 @@
 //   sim.advance_to(1.0);
 //
 // One step reads like the algorithm (DESIGN.md section 3):
-//   bin -> stress (one launch per material) -> P2G -> grid update -> G2P with the stability guard.
+//   bin -> constitutive update (return mapping and stress, one launch per material) -> P2G ->
+//   grid update (gravity, colliders, walls) -> G2P with the stability guard.
 #pragma once
 
 #include <algorithm>
@@ -146,7 +147,7 @@ class Simulation {
   // from zero over ramp_time (0: applied at once). A particle carries the first load that holds it.
   void add_load(const Point& lo, const Point& hi, const Point& force, double ramp_time) {
     loads_.push_back({lo, hi, force, ramp_time, {0, 0, 0}, -1});
-    prepared_ = false;
+    loads_assigned_ = false;
   }
 
   // Allocates an on_demand attribute with its initial value: x0 the current positions, Jp one,
@@ -176,7 +177,6 @@ class Simulation {
     }
     staged_material_.clear();
     storage_.permute(order.data(), backend_);
-    assign_loads();
     max_speed_ = T(diagnostics().max_speed);
     const ParticleView<T> pv = storage_.view();
     double lightest = std::numeric_limits<double>::max();
@@ -199,6 +199,7 @@ class Simulation {
 
   void step(double dt) {
     prepare();
+    if (!loads_assigned_) assign_loads();
     ramp_loads(time_ + dt);
     const bool quadratic = config_.shape == Shape::quadratic;
     switch (config_.transfer) {
@@ -479,6 +480,7 @@ class Simulation {
 
   // Marks each particle with the first load whose region holds it and sets the loads' accelerations.
   void assign_loads() {
+    loads_assigned_ = true;
     if (loads_.empty()) return;
     enable(Attribute::load);
     enable(Attribute::body_accel);
@@ -567,6 +569,7 @@ class Simulation {
   double time_ = 0, last_dt_ = 0;
   long steps_ = 0;
   bool prepared_ = false;
+  bool loads_assigned_ = true;  // false after add_load, until the next step assigns particles
 };
 
 }  // namespace firn
