@@ -34,15 +34,6 @@ void record(DriverHistory& h, const Mat3<double>& F, const Point& p) {
 
 }  // namespace
 
-Mat3<double> rotation_matrix(const Vec3<double>& axis_in, double angle) {
-  const double n = norm(axis_in);
-  const Vec3<double> a = {{axis_in[0] / n, axis_in[1] / n, axis_in[2] / n}};
-  const double c = std::cos(angle), s = std::sin(angle), t = 1 - c;
-  return Mat3<double>{{t * a[0] * a[0] + c, t * a[0] * a[1] - s * a[2], t * a[0] * a[2] + s * a[1],
-                       t * a[0] * a[1] + s * a[2], t * a[1] * a[1] + c, t * a[1] * a[2] - s * a[0],
-                       t * a[0] * a[2] - s * a[1], t * a[1] * a[2] + s * a[0], t * a[2] * a[2] + c}};
-}
-
 DriverHistory drive_material(const MaterialModel<double>& model, const DeformationPath& path, int increments) {
   DriverHistory h;
   Point p;
@@ -117,7 +108,7 @@ DeformationPath cyclic_uniaxial_strain(double amplitude, int cycles) {
 }
 
 DeformationPath rotated(const DeformationPath& path, const Vec3<double>& axis, double angle) {
-  return [=](double t) { return rotation_matrix(axis, angle * t) * path(t); };
+  return [=](double t) { return axis_angle_rotation(axis, angle * t) * path(t); };
 }
 
 }  // namespace paths

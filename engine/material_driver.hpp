@@ -44,7 +44,4 @@ DeformationPath cyclic_uniaxial_strain(double amplitude, int cycles);
 DeformationPath rotated(const DeformationPath& path, const Vec3<double>& axis, double angle);
 }  // namespace paths
 
-// The rotation by angle about axis (Rodrigues' formula).
-Mat3<double> rotation_matrix(const Vec3<double>& axis, double angle);
-
 }  // namespace firn

@@ -375,10 +375,11 @@ class Simulation {
                   Mat3<T> F = load_F(pv, p);
                   PlasticState<T> state = load_state(pv, p);
                   if constexpr (Model::kPlastic) {
-                    model.project(F, state);
-                    for (int q = 0; q < 9; ++q) pv.F[q][p] = F.m[q];
-                    if constexpr (Model::kUsesAlpha) pv.alpha[p] = state.alpha;
-                    if constexpr (Model::kUsesJp) pv.Jp[p] = state.Jp;
+                    if (model.project(F, state)) {
+                      for (int q = 0; q < 9; ++q) pv.F[q][p] = F.m[q];
+                      if constexpr (Model::kUsesAlpha) pv.alpha[p] = state.alpha;
+                      if constexpr (Model::kUsesJp) pv.Jp[p] = state.Jp;
+                    }
                   }
                   const Mat3<T> tau = model.kirchhoff(F, state);
                   pv.tau[0][p] = tau(0, 0);

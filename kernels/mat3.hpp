@@ -102,6 +102,16 @@ FIRN_HD Mat3<T> inverse(const Mat3<T>& a) {
 }
 template <class T>
 FIRN_HD T trace(const Mat3<T>& a) { return a(0, 0) + a(1, 1) + a(2, 2); }
+// The rotation by `angle` about `axis` (any length), Rodrigues' formula.
+template <class T>
+FIRN_HD Mat3<T> axis_angle_rotation(const Vec3<T>& axis, T angle) {
+  const T n = norm(axis);
+  const Vec3<T> a = {{axis[0] / n, axis[1] / n, axis[2] / n}};
+  const T c = std::cos(angle), s = std::sin(angle), t = T(1) - c;
+  return Mat3<T>{{t * a[0] * a[0] + c, t * a[0] * a[1] - s * a[2], t * a[0] * a[2] + s * a[1],
+                  t * a[0] * a[1] + s * a[2], t * a[1] * a[1] + c, t * a[1] * a[2] - s * a[0],
+                  t * a[0] * a[2] - s * a[1], t * a[1] * a[2] + s * a[0], t * a[2] * a[2] + c}};
+}
 // Frobenius inner product A : B.
 template <class T>
 FIRN_HD T ddot(const Mat3<T>& a, const Mat3<T>& b) {

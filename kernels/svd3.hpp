@@ -290,6 +290,15 @@ FIRN_HD void svd3(const Mat3<T>& A, Mat3<T>& U, Vec3<T>& sigma, Mat3<T>& V) {
   svd3_detail::svd3_sweeps(A, U, sigma, V, svd3_detail::Traits<T>::kSweeps);
 }
 
+// U diag(sigma) V^T: a matrix rebuilt from (possibly modified) singular values.
+template <class T>
+FIRN_HD Mat3<T> svd_compose(const Mat3<T>& U, const Vec3<T>& sigma, const Mat3<T>& V) {
+  Mat3<T> US = U;
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) US(r, k) *= sigma[k];
+  return mul_transposed(US, V);
+}
+
 template <class T>
 FIRN_HD Mat3<T> polar_rotation(const Mat3<T>& A) {
   Mat3<T> U, V;

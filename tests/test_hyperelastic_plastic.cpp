@@ -8,6 +8,7 @@
 
 #include "kernels/constitutive/hyperelastic_plastic.hpp"
 #include "kernels/constitutive/mooney_rivlin.hpp"
+#include "tests/constitutive_checks.hpp"
 
 namespace firn {
 namespace {
@@ -27,21 +28,6 @@ double dev_norm(const Mat3<double>& a) {
   Mat3<double> d = a;
   for (int i = 0; i < 3; ++i) d(i, i) -= trace(a) / 3;
   return std::sqrt(ddot(d, d));
-}
-
-template <class Model>
-void expect_stress_is_energy_derivative(const Model& model, const Mat3<double>& F, double scale) {
-  const double h = 1e-6;
-  Mat3<double> P;
-  for (int q = 0; q < 9; ++q) {
-    Mat3<double> Fp = F, Fm = F;
-    Fp.m[q] += h;
-    Fm.m[q] -= h;
-    P.m[q] = (model.energy_density(Fp, {}) - model.energy_density(Fm, {})) / (2 * h);
-  }
-  const Mat3<double> expected = mul_transposed(P, F);
-  const Mat3<double> tau = model.kirchhoff(F, {});
-  for (int q = 0; q < 9; ++q) EXPECT_NEAR(tau.m[q], expected.m[q], 1e-5 * scale) << "component " << q;
 }
 
 TEST(MooneyRivlin, UndeformedIsStressFree) {

@@ -8,6 +8,7 @@
 
 #include "kernels/constitutive/fixed_corotated.hpp"
 #include "kernels/constitutive/snow_stomakhin.hpp"
+#include "tests/constitutive_checks.hpp"
 
 namespace firn {
 namespace {
@@ -46,17 +47,7 @@ TEST(SnowStomakhin, StressIsEnergyDerivative) {
   for (int i = 0; i < 20; ++i) {
     Mat3<double> F = Mat3<double>::identity();
     for (double& x : F.m) x += d(rng);
-    const double h = 1e-7;
-    // tau = P F^T with P from central differences.
-    Mat3<double> P;
-    for (int q = 0; q < 9; ++q) {
-      Mat3<double> Fp = F, Fm = F;
-      Fp.m[q] += h;
-      Fm.m[q] -= h;
-      P.m[q] = (m.energy_density(Fp, s) - m.energy_density(Fm, s)) / (2 * h);
-    }
-    const Mat3<double> expected = mul_transposed(P, F), tau = m.kirchhoff(F, s);
-    for (int q = 0; q < 9; ++q) EXPECT_NEAR(tau.m[q], expected.m[q], 1e-5 * std::exp(1.0) * (kMu + kLambda));
+    expect_stress_is_energy_derivative(m, F, std::exp(1.0) * (kMu + kLambda), s, 1e-7);
   }
 }
 

@@ -146,6 +146,11 @@ class TableReader {
     out_.insert_or_assign(key, o);
     return p;
   }
+  // An upper corner `hi` read from `key` must exceed the lower corner read from `lo_key`.
+  void require_above(const std::string& key, const Point& hi, const std::string& lo_key, const Point& lo) const {
+    for (int d = 0; d < 3; ++d)
+      if (!(hi[d] > lo[d])) fail(key, "must exceed " + lo_key + " in every component");
+  }
   std::string choice(const std::string& key) {
     const KeySpec& k = spec(key);
     const toml::node* n = value(k);
@@ -270,8 +275,7 @@ BodyShape read_shape(const Context& ctx, TableReader& r, toml::table& out, const
     s.kind = BodyShape::Kind::box;
     s.min = r.vec3("min");
     s.max = r.vec3("max");
-    for (int d = 0; d < 3; ++d)
-      if (!(s.max[d] > s.min[d])) r.fail("max", "must exceed min in every component");
+    r.require_above("max", s.max, "min", s.min);
   } else if (kind == "cylinder") {
     s.kind = BodyShape::Kind::cylinder;
     s.center = r.vec3("center");
@@ -444,8 +448,7 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
     SimulationConfig& c = s.config;
     c.domain_min = r.vec3("domain_min");
     c.domain_max = r.vec3("domain_max");
-    for (int d = 0; d < 3; ++d)
-      if (!(c.domain_max[d] > c.domain_min[d])) r.fail("domain_max", "must exceed domain_min in every component");
+    r.require_above("domain_max", c.domain_max, "domain_min", c.domain_min);
     c.dx = r.number("dx");
     for (int d = 0; d < 3; ++d)
       if ((c.domain_max[d] - c.domain_min[d]) / c.dx > 1e5) r.fail("dx", "gives more than 1e5 cells along an axis");
@@ -571,8 +574,7 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
         c.kind = ColliderSpec::Kind::box;
         c.min = r.vec3("min");
         c.max = r.vec3("max");
-        for (int d = 0; d < 3; ++d)
-          if (!(c.max[d] > c.min[d])) r.fail("max", "must exceed min in every component");
+        r.require_above("max", c.max, "min", c.min);
       }
       c.velocity = r.vec3("velocity");
       c.boundary = WallType(r.choice_index("boundary") + 1);
@@ -594,8 +596,7 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
       LoadSpec l;
       l.region_min = r.vec3("region_min");
       l.region_max = r.vec3("region_max");
-      for (int d = 0; d < 3; ++d)
-        if (!(l.region_max[d] > l.region_min[d])) r.fail("region_max", "must exceed region_min in every component");
+      r.require_above("region_max", l.region_max, "region_min", l.region_min);
       l.force = r.vec3("force");
       l.ramp_time = r.number("ramp_time");
       r.finish();

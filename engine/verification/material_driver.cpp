@@ -78,7 +78,7 @@ double objectivity_error(const MaterialModel<double>& model, const DeformationPa
   for (const auto& t : a.tau) scale = std::max(scale, max_abs(t));
   double e = 0;
   for (int k = 0; k <= increments; ++k) {
-    const Mat3<double> Q = rotation_matrix(axis, angle * k / increments);
+    const Mat3<double> Q = axis_angle_rotation(axis, angle * k / increments);
     e = std::max(e, max_abs(b.tau[k] - mul_transposed(Q * a.tau[k], Q)) / scale);
     e = std::max(e, std::abs(b.state[k].alpha - a.state[k].alpha) / std::max(a.state.back().alpha, 1e-300));
     e = std::max(e, std::abs(b.state[k].Jp - a.state[k].Jp));

@@ -66,9 +66,9 @@ struct HyperelasticPlastic {
     return elastic.G1 * Jm23 * std::sqrt(ddot(dev, dev)) - std::sqrt(T(2) / T(3)) * hardening.yield_stress(state.alpha);
   }
 
-  FIRN_HD void project(Mat3<T>& F, PlasticState<T>& state) const {
+  FIRN_HD bool project(Mat3<T>& F, PlasticState<T>& state) const {
     const T J = determinant(F);
-    if (!(J > T(0))) return;  // inverted or NaN: left for the stability guard to name
+    if (!(J > T(0))) return false;  // inverted or NaN: left for the stability guard to name
     const Mat3<T> b = mul_transposed(F, F);
     const T Jm23 = T(1) / (std::cbrt(J) * std::cbrt(J));
     const T Ibar = Jm23 * trace(b) / T(3);
@@ -76,7 +76,7 @@ struct HyperelasticPlastic {
     for (int d = 0; d < 3; ++d) dev(d, d) -= trace(b) / T(3);
     const T s_norm = elastic.G1 * Jm23 * std::sqrt(ddot(dev, dev));
     const T sqrt23 = std::sqrt(T(2) / T(3));
-    if (s_norm - sqrt23 * hardening.yield_stress(state.alpha) <= T(0)) return;  // step 1: elastic
+    if (s_norm - sqrt23 * hardening.yield_stress(state.alpha) <= T(0)) return false;  // step 1: elastic
 
     // Step 2: radial return.
     const T mu_bar = elastic.G1 * Ibar;
@@ -105,10 +105,9 @@ struct HyperelasticPlastic {
     for (int d = 0; d < 3; ++d) s_new[d] = std::sqrt(x + c[d]);
     // Rescale by (J / prod)^(1/3): J^(1/3) from bbar -> b_e, and the rounding left in prod(x + c_i).
     const T scale = std::cbrt(J / (s_new[0] * s_new[1] * s_new[2]));
-    Mat3<T> US = U;
-    for (int r = 0; r < 3; ++r)
-      for (int k = 0; k < 3; ++k) US(r, k) *= scale * s_new[k];
-    F = mul_transposed(US, V);
+    for (int d = 0; d < 3; ++d) s_new[d] *= scale;
+    F = svd_compose(U, s_new, V);
+    return true;
   }
 };
 

@@ -9,8 +9,9 @@
 //   Mat3<T> kirchhoff(const Mat3<T>& F, const PlasticState<T>&) const;     tau = J sigma
 //   T energy_density(const Mat3<T>& F, const PlasticState<T>&) const;      per rest volume
 //   T p_wave_modulus(const PlasticState<T>&) const;   K + 4G/3 with the current hardening
-//   void project(Mat3<T>& F, PlasticState<T>&) const; (kPlastic only) F holds the trial elastic
-//       deformation gradient on entry and the returned elastic one on exit.
+//   bool project(Mat3<T>& F, PlasticState<T>&) const; (kPlastic only) F holds the trial elastic
+//       deformation gradient on entry and the returned elastic one on exit; returns whether it
+//       changed F and the state (false on the elastic path, so the engine writes nothing back).
 #pragma once
 
 namespace firn {

@@ -47,11 +47,11 @@ struct SnowStomakhin {
     return hardened(state).energy_density(F);
   }
 
-  FIRN_HD void project(Mat3<T>& F, PlasticState<T>& state) const {
+  FIRN_HD bool project(Mat3<T>& F, PlasticState<T>& state) const {
     Mat3<T> U, V;
     Vec3<T> s;
     svd3(F, U, s, V);
-    if (!(s[2] > T(0))) return;  // inverted or NaN: left for the stability guard to name
+    if (!(s[2] > T(0))) return false;  // inverted or NaN: left for the stability guard to name
     const T lo = T(1) - theta_c, hi = T(1) + theta_s;
     bool clamped = false;
     T ratio = T(1);  // det(s) / det(s_clamped), formed factor by factor
@@ -63,13 +63,11 @@ struct SnowStomakhin {
         s[d] = c;
       }
     }
-    if (!clamped) return;
+    if (!clamped) return false;
     const T Jp = state.Jp * ratio;
     state.Jp = Jp < Jp_min ? Jp_min : (Jp > Jp_max ? Jp_max : Jp);
-    Mat3<T> US = U;
-    for (int r = 0; r < 3; ++r)
-      for (int k = 0; k < 3; ++k) US(r, k) *= s[k];
-    F = mul_transposed(US, V);
+    F = svd_compose(U, s, V);
+    return true;
   }
 };
 
