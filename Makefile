@@ -3,7 +3,7 @@
 #   make demo   deps + Release build + the known-answer problems, the snowball_pair scene (preview)
 #               and the reference benchmark
 #   make test   deps + Release build + the whole test suite
-DEB_PACKAGES := build-essential cmake libeigen3-dev libcli11-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev \
+DEB_PACKAGES := build-essential cmake libeigen3-dev libcli11-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev libstb-dev zlib1g-dev \
                 python3 python3-vtk9
 JOBS ?= $(shell nproc)
 FIRN := build/release/firn

@@ -57,14 +57,16 @@ class ParticleStorage {
     return v;
   }
 
-  // Reorders every enabled column: new[i] = old[order[i]], using the backend for the copies.
+  // Reorders and/or drops particles in every enabled column: new[i] = old[order[i]] for
+  // i < count (count <= size), using the backend for the copies.
   template <class Backend>
-  void permute(const std::uint32_t* order, const Backend& backend) {
-#define FIRN_PERMUTE(name, n, kind, alloc, doc) \
-  for (auto& col : name##_)                     \
-    if (!col.empty()) gather(col, order, backend);
-    FIRN_PARTICLE_ATTRIBUTES(FIRN_PERMUTE)
-#undef FIRN_PERMUTE
+  void gather(const std::uint32_t* order, std::size_t count, const Backend& backend) {
+#define FIRN_GATHER(name, n, kind, alloc, doc) \
+  for (auto& col : name##_)                    \
+    if (!col.empty()) gather_column(col, order, count, backend);
+    FIRN_PARTICLE_ATTRIBUTES(FIRN_GATHER)
+#undef FIRN_GATHER
+    size_ = count;
   }
 
  private:
@@ -80,11 +82,11 @@ class ParticleStorage {
   }
 
   template <class S, class Backend>
-  void gather(AlignedVector<S>& col, const std::uint32_t* order, const Backend& backend) {
-    AlignedVector<S> out(col.size());
+  static void gather_column(AlignedVector<S>& col, const std::uint32_t* order, std::size_t count, const Backend& backend) {
+    AlignedVector<S> out(count);
     S* o = out.data();
     const S* in = col.data();
-    backend.parallel_for("particles.permute", col.size(), [=](std::size_t i) { o[i] = in[order[i]]; });
+    backend.parallel_for("particles.gather", count, [=](std::size_t i) { o[i] = in[order[i]]; });
     col.swap(out);
   }
 

@@ -25,6 +25,7 @@
 #include <variant>
 #include <vector>
 
+#include "engine/collider_body.hpp"
 #include "engine/elastic_moduli.hpp"
 #include "engine/materials.hpp"
 #include "engine/particle_binning.hpp"
@@ -69,6 +70,19 @@ struct Diagnostics {
   double min_J = 0;
 };
 
+// The vertical force of one collider summed per grid column (x, z) and integrated over time since
+// the last reset: the footprint's contact pressure is impulse / (time dx^2).
+struct FootprintMap {
+  int nx = 0, nz = 0;              // grid nodes along x and z; column (i, k) at origin + (i, k) dx
+  double origin_x = 0, origin_z = 0, dx = 0;
+  std::vector<double> impulse;     // [i * nz + k] (N s)
+  double time = 0;                 // integration time (s)
+  void reset() {
+    std::fill(impulse.begin(), impulse.end(), 0.0);
+    time = 0;
+  }
+};
+
 template <class T, class Backend>
 class Simulation {
  public:
@@ -107,7 +121,8 @@ class Simulation {
     add_particles(material, positions, std::vector<Point>(positions.size(), velocity), volume);
   }
 
-  // As above, with a velocity per particle.
+  // As above, with a velocity per particle. Until the next step or prepare(), the new particles
+  // hold the last positions.size() indices of particles().
   void add_particles(int material, const std::vector<Point>& positions, const std::vector<Point>& velocities,
                      double volume) {
     if (material < 0 || material >= int(materials_.size())) throw std::invalid_argument("unknown material index");
@@ -129,17 +144,56 @@ class Simulation {
       if (pv.Jp) pv.Jp[p] = T(1);
       pv.mass[p] = mass;
       pv.vol0[p] = T(volume);
-      pv.id[p] = std::uint32_t(p);
+      pv.id[p] = next_id_++;
     }
     staged_material_.insert(staged_material_.end(), positions.size(), material);
     prepared_ = false;
   }
 
-  // Adds a kinematic collider (at most kMaxColliders).
-  void add_collider(const Collider<T>& c) {
+  // Removes the particles p for which remove(view, p) is true (a kernel-style predicate, evaluated
+  // in parallel) and returns how many. The others keep their order within each material.
+  template <class Predicate>
+  std::size_t remove_particles(Predicate remove) {
+    prepare();
+    const ParticleView<T> pv = storage_.view();
+    const std::size_t doomed = backend_.parallel_reduce(
+        "particles.count_removed", pv.n, std::size_t(0),
+        [=](std::size_t p, std::size_t& acc) { acc += remove(pv, p) ? 1 : 0; },
+        [](std::size_t& a, std::size_t b) { a += b; });
+    if (doomed == 0) return 0;
+    std::vector<std::uint32_t> keep;
+    keep.reserve(pv.n - doomed);
+    for (auto& m : materials_) {
+      const std::size_t begin = keep.size();
+      for (std::size_t p = m.range.begin; p < m.range.end; ++p)
+        if (!remove(pv, p)) keep.push_back(std::uint32_t(p));
+      m.range = {begin, keep.size()};
+    }
+    storage_.gather(keep.data(), keep.size(), backend_);
+    return doomed;
+  }
+
+  // Adds a rigid collider (at most kMaxColliders) and returns its index.
+  int add_collider(const ColliderBody& c) {
     if (int(colliders_.size()) >= kMaxColliders)
       throw std::invalid_argument("at most " + std::to_string(kMaxColliders) + " colliders");
+    if (c.motion == ColliderBody::Motion::loaded_axle && !(c.mass > 0))
+      throw std::invalid_argument("a loaded axle needs a positive mass");
     colliders_.push_back(c);
+    return int(colliders_.size()) - 1;
+  }
+
+  // Starts summing the vertical force of collider `c` per grid column (x, z) into footprint().
+  void enable_footprint(int c) {
+    const GridGeometry<T> g = grid_.geometry();
+    footprint_collider_ = c;
+    footprint_.nx = g.nodes[0];
+    footprint_.nz = g.nodes[2];
+    footprint_.origin_x = double(g.origin[0]);
+    footprint_.origin_z = double(g.origin[2]);
+    footprint_.dx = config_.dx;
+    footprint_.impulse.assign(std::size_t(footprint_.nx) * std::size_t(footprint_.nz), 0.0);
+    footprint_.time = 0;
   }
 
   // A total force spread over the particles inside [lo, hi] when the run starts, in proportion to
@@ -176,7 +230,7 @@ class Simulation {
       materials_[m].range.end = order.size();
     }
     staged_material_.clear();
-    storage_.permute(order.data(), backend_);
+    storage_.gather(order.data(), order.size(), backend_);
     max_speed_ = T(diagnostics().max_speed);
     const ParticleView<T> pv = storage_.view();
     double lightest = std::numeric_limits<double>::max();
@@ -266,12 +320,20 @@ class Simulation {
     return out;
   }
 
+  // Physical indices of the particles in increasing id.
+  std::vector<std::uint32_t> id_order() {
+    const ParticleView<T> pv = storage_.view();
+    std::vector<std::uint32_t> order(pv.n);
+    for (std::size_t p = 0; p < pv.n; ++p) order[p] = std::uint32_t(p);
+    std::sort(order.begin(), order.end(), [&pv](std::uint32_t a, std::uint32_t b) { return pv.id[a] < pv.id[b]; });
+    return order;
+  }
+
   // FNV-1a over every particle's position and velocity bits, in particle id order: equal states
   // give equal hashes whatever the memory layout.
   std::uint64_t state_hash() {
     const ParticleView<T> pv = storage_.view();
-    std::vector<std::uint32_t> by_id(pv.n);
-    for (std::size_t p = 0; p < pv.n; ++p) by_id[pv.id[p]] = std::uint32_t(p);
+    const std::vector<std::uint32_t> by_id = id_order();
     std::uint64_t h = 1469598103934665603ull;
     auto mix = [&h](T value) {
       unsigned char bytes[sizeof(T)];
@@ -287,6 +349,11 @@ class Simulation {
   }
 
   ParticleView<T> particles() { return storage_.view(); }
+  std::size_t collider_count() const { return colliders_.size(); }
+  const ColliderBody& collider(int c) const { return colliders_[std::size_t(c)]; }
+  ColliderBody& collider(int c) { return colliders_[std::size_t(c)]; }
+  const FootprintMap& footprint() const { return footprint_; }
+  FootprintMap& footprint() { return footprint_; }
   std::size_t particle_count() const { return storage_.size(); }
   std::size_t bytes_per_particle() const { return storage_.bytes_per_particle(); }
   double time() const { return time_; }
@@ -352,7 +419,7 @@ class Simulation {
     }
     binning_.sort(grid_.blocks(), backend_);
     if (binning_.needs_reorder(backend_)) {
-      storage_.permute(binning_.order(), backend_);
+      storage_.gather(binning_.order(), storage_.size(), backend_);
       binning_.reordered(backend_);
     }
     grid_.activate(binning_.particle_blocks(), backend_);
@@ -424,14 +491,17 @@ class Simulation {
       scratch.flush(gv);
     });
 
-    // 4. Grid update.
+    // 4. Grid update, with the colliders posed at the end of the step; their reactions are summed
+    //    per block, then over blocks in slot order (the same sums for any thread count).
     GridUpdateParams<T> up{};
     up.dt = dt;
-    up.time = T(time_ + double(dt));
     up.dx = g.dx;
     up.min_mass = min_node_mass_;
     up.collider_count = int(colliders_.size());
-    for (std::size_t c = 0; c < colliders_.size(); ++c) up.colliders[c] = colliders_[c];
+    for (std::size_t c = 0; c < colliders_.size(); ++c) {
+      colliders_[c].advance(double(dt));
+      up.colliders[c] = collider_cast<T>(colliders_[c].collider);
+    }
     for (int d = 0; d < 3; ++d) {
       up.gravity[d] = T(config_.gravity[d]);
       up.nodes[d] = g.nodes[d];
@@ -439,10 +509,19 @@ class Simulation {
     }
     for (int f = 0; f < 6; ++f)
       up.walls[f] = Wall<T>{config_.walls[f].type, config_.walls[f].width, T(config_.walls[f].friction)};
+    const std::size_t slots = grid_.active_count();
+    reactions_.assign(slots * colliders_.size() * kReactionComponents, T(0));
+    up.reactions = reactions_.data();
+    up.footprint_collider = footprint_collider_;
+    if (footprint_collider_ >= 0) {
+      footprint_blocks_.assign(slots * kBlockSize * kBlockSize, T(0));
+      up.footprint = footprint_blocks_.data();
+    }
     SparseGrid<T>& grid = grid_;
-    backend_.parallel_for("grid_update", grid_.active_count(), [&grid, up](std::size_t s) {
-      grid_update_block<T, kTransfer>(grid.slot_data(s), grid.slot_coords(s), up);
+    backend_.parallel_for("grid_update", slots, [&grid, up](std::size_t s) {
+      grid_update_block<T, kTransfer>(grid.slot_data(s), grid.slot_coords(s), s, up);
     });
+    collect_reactions(double(dt));
 
     // 5. G2P with the stability guard, block by block; summaries combined in block order.
     const std::vector<std::uint32_t>& blocks = bins.particle_blocks();
@@ -470,6 +549,29 @@ class Simulation {
     for (const auto& c : checks_) total.merge(c);
     if (total.reason != GuardReason::none) fail(total, dt);
     max_speed_ = total.max_speed;
+  }
+
+  // Sums the per-block collider reactions and footprint columns of the last grid update.
+  void collect_reactions(double dt) {
+    const std::size_t count = colliders_.size(), slots = grid_.active_count();
+    for (std::size_t c = 0; c < count; ++c) {
+      double f[kReactionComponents] = {0, 0, 0, 0, 0, 0};
+      for (std::size_t s = 0; s < slots; ++s)
+        for (int i = 0; i < kReactionComponents; ++i) f[i] += double(reactions_[(s * count + c) * kReactionComponents + i]);
+      colliders_[c].add_reaction(f, f + 3, dt);
+    }
+    if (footprint_collider_ < 0) return;
+    for (std::size_t s = 0; s < slots; ++s) {
+      const int* b = grid_.slot_coords(s);
+      for (int lx = 0; lx < kBlockSize; ++lx)
+        for (int lz = 0; lz < kBlockSize; ++lz) {
+          const int i = b[0] * kBlockSize + lx, k = b[2] * kBlockSize + lz;
+          if (i < footprint_.nx && k < footprint_.nz)
+            footprint_.impulse[std::size_t(i) * std::size_t(footprint_.nz) + std::size_t(k)] +=
+                dt * double(footprint_blocks_[s * kBlockSize * kBlockSize + std::size_t(lx * kBlockSize + lz)]);
+        }
+    }
+    footprint_.time += dt;
   }
 
   struct Load {
@@ -556,7 +658,11 @@ class Simulation {
   Backend backend_;
   ParticleStorage<T> storage_;
   std::vector<Material> materials_;
-  std::vector<Collider<T>> colliders_;
+  std::vector<ColliderBody> colliders_;
+  std::vector<T> reactions_;        // [slot][collider][6] of the last grid update
+  int footprint_collider_ = -1;
+  std::vector<T> footprint_blocks_;  // [slot][16]
+  FootprintMap footprint_;
   std::vector<Load> loads_;
   std::vector<int> staged_material_;  // material of each particle added since the last prepare()
   SparseGrid<T> grid_;
@@ -569,6 +675,7 @@ class Simulation {
   T min_node_mass_ = T(0);
   double time_ = 0, last_dt_ = 0;
   long steps_ = 0;
+  std::uint32_t next_id_ = 0;  // ids are never reused, so removed and injected particles stay apart
   bool prepared_ = false;
   bool loads_assigned_ = true;  // false after add_load, until the next step assigns particles
 };

@@ -4,13 +4,15 @@
 //   slip:     the normal component is removed in both directions;
 //   separate: the normal component is removed only when approaching (v.n < 0), so material can
 //             leave the wall (Stomakhin et al. 2013, Sec. 8);
-// slip and separate apply Coulomb friction when approaching: v_t <- v_t max(0, 1 - mu |v_n| / |v_t|)
-// (DESIGN.md section 4, "Friction").
+// slip and separate apply friction when approaching: v_t <- v_t max(0, 1 - mu(|v_t|) |v_n| / |v_t|)
+// with mu from kernels/friction.hpp evaluated at the trial slip speed |v_t| (DESIGN.md section 4,
+// "Friction").
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 
+#include "kernels/friction.hpp"
 #include "kernels/hd.hpp"
 
 namespace firn {
@@ -25,7 +27,7 @@ struct Wall {
 };
 
 template <class T>
-FIRN_HD void apply_wall(T v[3], const T n[3], WallType type, T mu) {
+FIRN_HD void apply_wall(T v[3], const T n[3], WallType type, const Friction<T>& friction) {
   if (type == WallType::none) return;
   if (type == WallType::sticky) {
     v[0] = v[1] = v[2] = T(0);
@@ -34,13 +36,19 @@ FIRN_HD void apply_wall(T v[3], const T n[3], WallType type, T mu) {
   const T vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
   if (type == WallType::separate && vn >= T(0)) return;
   T vt[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
-  if (vn < T(0) && mu > T(0)) {
+  if (vn < T(0) && friction.mu > T(0)) {
     const T vt_norm = std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]);
-    const T scale = vt_norm > T(0) ? T(1) - mu * (-vn) / vt_norm : T(0);
+    const T scale = vt_norm > T(0) ? T(1) - friction.coefficient(vt_norm) * (-vn) / vt_norm : T(0);
     const T keep = scale > T(0) ? scale : T(0);
     for (int d = 0; d < 3; ++d) vt[d] *= keep;
   }
   for (int d = 0; d < 3; ++d) v[d] = vt[d];
+}
+
+// Coulomb friction with coefficient mu.
+template <class T>
+FIRN_HD void apply_wall(T v[3], const T n[3], WallType type, T mu) {
+  apply_wall(v, n, type, Friction<T>{FrictionLaw::coulomb, mu});
 }
 
 }  // namespace firn

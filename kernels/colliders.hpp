@@ -1,72 +1,144 @@
-// Kinematic rigid colliders acting on grid nodes (DESIGN.md section 3): a half-space plane or an
-// axis-aligned box moving with constant velocity. A node whose position lies inside the solid
-// (signed distance <= 0) takes the collider's boundary condition on its velocity relative to the
-// collider: v <- v_c + bc(v - v_c), with bc from kernels/boundary_conditions.hpp and n the outward
-// normal of the solid (the gradient of the signed distance).
+// Kinematic rigid colliders acting on grid nodes (DESIGN.md section 3): signed distance functions
+// evaluated in the collider's moving frame, with linear and angular velocity.
+//
+// The pose is the one at the end of the step (the engine advances it before the grid update):
+// a node at x has body coordinates y = R^T (x - c), with c the body origin and R the rotation
+// whose columns are the body axes in world coordinates. In the body frame:
+//   plane:    the solid y1 <= 0 (normal: the body y axis);
+//   box:      |y_d| <= half[d];
+//   cylinder: sqrt(y0^2 + y1^2) <= radius, |y2| <= half[2] (axis: the body z axis);
+//   tire:     TireShape (axle: the body z axis).
+// A node inside (signed distance <= 0) takes the boundary condition on its velocity relative to
+// the collider's rigid velocity at that node, v_c(x) = v + omega x (x - c), which is exact for
+// rigid motion: v <- v_c + bc(v - v_c), bc from kernels/boundary_conditions.hpp with the outward
+// normal n = R grad(d). The change of the node's momentum is the impulse the collider applies;
+// its opposite acts on the collider (grid_update.hpp sums it into force and torque).
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 
 #include "kernels/boundary_conditions.hpp"
+#include "kernels/friction.hpp"
 #include "kernels/hd.hpp"
+#include "kernels/tire_shape.hpp"
 
 namespace firn {
 
-enum class ColliderShape : std::uint8_t { plane, box };
+enum class ColliderShape : std::uint8_t { plane, box, cylinder, tire };
 
 template <class T>
 struct Collider {
   ColliderShape shape = ColliderShape::plane;
   WallType boundary = WallType::sticky;
-  T friction = T(0);
-  T point[3] = {T(0), T(0), T(0)};   // plane: a point on it at t = 0
-  T normal[3] = {T(0), T(1), T(0)};  // plane: unit normal out of the solid
-  T min[3] = {T(0), T(0), T(0)};     // box corners at t = 0
-  T max[3] = {T(0), T(0), T(0)};
-  T velocity[3] = {T(0), T(0), T(0)};
+  Friction<T> friction{};
+  T center[3] = {T(0), T(0), T(0)};                                  // body origin c
+  T rotation[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};  // R, row-major
+  T velocity[3] = {T(0), T(0), T(0)};                                // of the origin
+  T angular_velocity[3] = {T(0), T(0), T(0)};                        // omega, world frame
+  T half[3] = {T(0), T(0), T(0)};  // box half extents; cylinder: half[2] is the half length
+  T radius = T(0);                 // cylinder
+  TireShape<T> tire{};
 
-  // Signed distance from x to the solid's surface at time t (negative inside), and the outward
-  // normal n. The box distance is exact (inside: distance to the nearest face).
-  FIRN_HD T distance(const T x[3], T t, T n[3]) const {
-    T y[3];
-    for (int d = 0; d < 3; ++d) y[d] = x[d] - velocity[d] * t;
-    if (shape == ColliderShape::plane) {
-      T s = T(0);
-      for (int d = 0; d < 3; ++d) {
-        n[d] = normal[d];
-        s += (y[d] - point[d]) * normal[d];
-      }
-      return s;
-    }
-    T q[3], outside2 = T(0), inside = -T(INFINITY);
-    int face = 0;
-    for (int d = 0; d < 3; ++d) {
-      const T c = T(0.5) * (min[d] + max[d]), h = T(0.5) * (max[d] - min[d]);
-      const T r = y[d] - c;
-      q[d] = std::fabs(r) - h;
-      n[d] = q[d] > T(0) ? (r > T(0) ? q[d] : -q[d]) : T(0);
-      outside2 += q[d] > T(0) ? q[d] * q[d] : T(0);
-      if (q[d] > inside) inside = q[d], face = d;
-    }
-    if (outside2 > T(0)) {
-      const T len = std::sqrt(outside2);
-      for (int d = 0; d < 3; ++d) n[d] /= len;
-      return len;
-    }
-    for (int d = 0; d < 3; ++d) n[d] = T(0);
-    n[face] = y[face] > T(0.5) * (min[face] + max[face]) ? T(1) : T(-1);
-    return inside;
+  // Signed distance from x to the surface (negative inside) and the outward unit normal n.
+  FIRN_HD T distance(const T x[3], T n[3]) const {
+    T y[3], m[3];
+    for (int i = 0; i < 3; ++i)  // y = R^T (x - c)
+      y[i] = rotation[i] * (x[0] - center[0]) + rotation[3 + i] * (x[1] - center[1]) +
+             rotation[6 + i] * (x[2] - center[2]);
+    const T d = body_distance(y, m);
+    for (int i = 0; i < 3; ++i) n[i] = rotation[3 * i] * m[0] + rotation[3 * i + 1] * m[1] + rotation[3 * i + 2] * m[2];
+    return d;
   }
 
-  // Applies the boundary condition to the node velocity v at x, time t, if x is inside.
-  FIRN_HD void apply(T v[3], const T x[3], T t) const {
+  // The rigid body's velocity at x: v + omega x (x - c).
+  FIRN_HD void velocity_at(const T x[3], T out[3]) const {
+    const T r[3] = {x[0] - center[0], x[1] - center[1], x[2] - center[2]};
+    const T* w = angular_velocity;
+    out[0] = velocity[0] + w[1] * r[2] - w[2] * r[1];
+    out[1] = velocity[1] + w[2] * r[0] - w[0] * r[2];
+    out[2] = velocity[2] + w[0] * r[1] - w[1] * r[0];
+  }
+
+  // Applies the boundary condition to the node velocity v at x if x is inside; returns whether it did.
+  FIRN_HD bool apply(T v[3], const T x[3]) const {
     T n[3];
-    if (distance(x, t, n) > T(0)) return;
-    T rel[3] = {v[0] - velocity[0], v[1] - velocity[1], v[2] - velocity[2]};
+    if (distance(x, n) > T(0)) return false;
+    T vc[3];
+    velocity_at(x, vc);
+    T rel[3] = {v[0] - vc[0], v[1] - vc[1], v[2] - vc[2]};
     apply_wall(rel, n, boundary, friction);
-    for (int d = 0; d < 3; ++d) v[d] = rel[d] + velocity[d];
+    for (int d = 0; d < 3; ++d) v[d] = rel[d] + vc[d];
+    return true;
+  }
+
+ private:
+  FIRN_HD T body_distance(const T y[3], T n[3]) const {
+    n[0] = n[1] = n[2] = T(0);
+    switch (shape) {
+      case ColliderShape::plane:
+        n[1] = T(1);
+        return y[1];
+      case ColliderShape::box: {
+        T q[3], outside2 = T(0), inside = -T(INFINITY);
+        int face = 0;
+        for (int d = 0; d < 3; ++d) {
+          q[d] = std::fabs(y[d]) - half[d];
+          n[d] = q[d] > T(0) ? (y[d] > T(0) ? q[d] : -q[d]) : T(0);
+          outside2 += q[d] > T(0) ? q[d] * q[d] : T(0);
+          if (q[d] > inside) inside = q[d], face = d;
+        }
+        if (outside2 > T(0)) {
+          const T len = std::sqrt(outside2);
+          for (int d = 0; d < 3; ++d) n[d] /= len;
+          return len;
+        }
+        n[0] = n[1] = n[2] = T(0);
+        n[face] = y[face] > T(0) ? T(1) : T(-1);
+        return inside;
+      }
+      case ColliderShape::cylinder: {
+        TireShape<T> plain;  // a tire without tread is a capped cylinder
+        plain.radius = radius;
+        plain.width = T(2) * half[2];
+        plain.tread_depth = T(0);
+        return plain.distance(y, n);
+      }
+      case ColliderShape::tire:
+        return tire.distance(y, n);
+    }
+    return T(INFINITY);
   }
 };
+
+// The same collider in another precision (the engine keeps poses in double).
+template <class T, class U>
+Collider<T> collider_cast(const Collider<U>& c) {
+  Collider<T> o;
+  o.shape = c.shape;
+  o.boundary = c.boundary;
+  o.friction = Friction<T>{c.friction.law, T(c.friction.mu)};
+  for (int i = 0; i < 3; ++i) {
+    o.center[i] = T(c.center[i]);
+    o.velocity[i] = T(c.velocity[i]);
+    o.angular_velocity[i] = T(c.angular_velocity[i]);
+    o.half[i] = T(c.half[i]);
+  }
+  for (int i = 0; i < 9; ++i) o.rotation[i] = T(c.rotation[i]);
+  o.radius = T(c.radius);
+  o.tire.radius = T(c.tire.radius);
+  o.tire.width = T(c.tire.width);
+  o.tire.tread_depth = T(c.tire.tread_depth);
+  o.tire.pitches = c.tire.pitches;
+  o.tire.block_count = c.tire.block_count;
+  for (int b = 0; b < kMaxTreadBlocks; ++b) {
+    o.tire.blocks[b].vertex_count = c.tire.blocks[b].vertex_count;
+    for (int v = 0; v < kMaxBlockVertices; ++v) {
+      o.tire.blocks[b].u[v] = T(c.tire.blocks[b].u[v]);
+      o.tire.blocks[b].w[v] = T(c.tire.blocks[b].w[v]);
+    }
+  }
+  return o;
+}
 
 }  // namespace firn

@@ -1,10 +1,17 @@
 // Grid update: momentum to velocity, gravity, colliders and the domain walls, for one 4x4x4 block.
 //   v_i = (m v)_i / m_i + dt g, then each collider containing the node at the end of the step,
 //   then each wall whose band contains the node (DESIGN.md section 3).
+// Collider reactions: the impulse a collider gives a node is m_i (v_after - v_before); the force on
+// the collider is its opposite over dt, summed over the block into `reactions` (per block slot and
+// collider: force xyz, then torque xyz about the collider's origin). When `footprint` is set, the
+// vertical force on collider `footprint_collider` is also summed per 4x4 column of the block
+// (x-major), the contact pressure map's raw material.
 // Nodes with (almost) no mass get zero velocity: below `min_mass` the reciprocal 1/m could overflow
 // (a corner node reached only through three tiny B-spline weights has a denormal mass in float),
 // and a zero weight must never multiply a NaN in G2P.
 #pragma once
+
+#include <cstddef>
 
 #include "kernels/boundary_conditions.hpp"
 #include "kernels/colliders.hpp"
@@ -19,7 +26,6 @@ constexpr int kMaxColliders = 16;
 template <class T>
 struct GridUpdateParams {
   T dt;
-  T time;  // at the end of the step: colliders act where they will be
   T gravity[3];
   Wall<T> walls[6];  // faces -x, +x, -y, +y, -z, +z
   int nodes[3];
@@ -27,12 +33,19 @@ struct GridUpdateParams {
   T dx;
   T min_mass;  // nodes lighter than this are treated as empty
   int collider_count;
-  Collider<T> colliders[kMaxColliders];
+  Collider<T> colliders[kMaxColliders];  // posed at the end of the step
+  T* reactions;                           // [slot][collider][6], written when collider_count > 0
+  int footprint_collider;                 // -1: no footprint
+  T* footprint;                           // [slot][16]
 };
 
+constexpr int kReactionComponents = 6;
+
 template <class T, Transfer kTransfer>
-FIRN_HD void grid_update_block(T* data, const int block[3], const GridUpdateParams<T>& p) {
+FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, const GridUpdateParams<T>& p) {
   using Ch = GridChannels<kTransfer>;
+  T reaction[kMaxColliders][kReactionComponents] = {};
+  T column_force[kBlockSize * kBlockSize] = {};
   for (int l = 0; l < kBlockNodes; ++l) {
     T* mass = data + Ch::kMass * kBlockNodes + l;
     T* vel[3] = {data + (Ch::kVelocity + 0) * kBlockNodes + l, data + (Ch::kVelocity + 1) * kBlockNodes + l,
@@ -53,7 +66,20 @@ FIRN_HD void grid_update_block(T* data, const int block[3], const GridUpdatePara
                          block[1] * kBlockSize + (l / kBlockSize) % kBlockSize, block[2] * kBlockSize + l % kBlockSize};
     if (p.collider_count > 0) {
       const T x[3] = {p.origin[0] + T(node[0]) * p.dx, p.origin[1] + T(node[1]) * p.dx, p.origin[2] + T(node[2]) * p.dx};
-      for (int c = 0; c < p.collider_count; ++c) p.colliders[c].apply(v, x, p.time);
+      for (int c = 0; c < p.collider_count; ++c) {
+        const Collider<T>& k = p.colliders[c];
+        const T before[3] = {v[0], v[1], v[2]};
+        if (!k.apply(v, x)) continue;
+        T f[3];  // on the collider: -m (v_after - v_before) / dt
+        for (int d = 0; d < 3; ++d) f[d] = *mass * (before[d] - v[d]) / p.dt;
+        const T r[3] = {x[0] - k.center[0], x[1] - k.center[1], x[2] - k.center[2]};
+        T* out = reaction[c];
+        for (int d = 0; d < 3; ++d) out[d] += f[d];
+        out[3] += r[1] * f[2] - r[2] * f[1];
+        out[4] += r[2] * f[0] - r[0] * f[2];
+        out[5] += r[0] * f[1] - r[1] * f[0];
+        if (c == p.footprint_collider) column_force[(l / (kBlockSize * kBlockSize)) * kBlockSize + l % kBlockSize] += f[1];
+      }
     }
     for (int d = 0; d < 3; ++d) {
       const Wall<T>& lo = p.walls[2 * d];
@@ -70,6 +96,11 @@ FIRN_HD void grid_update_block(T* data, const int block[3], const GridUpdatePara
     }
     for (int d = 0; d < 3; ++d) *vel[d] = v[d];
   }
+  for (int c = 0; c < p.collider_count; ++c)
+    for (int i = 0; i < kReactionComponents; ++i)
+      p.reactions[(slot * std::size_t(p.collider_count) + std::size_t(c)) * kReactionComponents + i] = reaction[c][i];
+  if (p.footprint)
+    for (int i = 0; i < kBlockSize * kBlockSize; ++i) p.footprint[slot * kBlockSize * kBlockSize + i] = column_force[i];
 }
 
 }  // namespace firn

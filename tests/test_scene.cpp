@@ -137,33 +137,6 @@ TEST(SceneBuilder, AngularVelocitySpinsAboutTheCentreOfMass) {
   EXPECT_NEAR(L / I, 10, 1e-9);
 }
 
-TEST(Colliders, BoxDistanceAndNormalAreExact) {
-  Collider<double> box;
-  box.shape = ColliderShape::box;
-  for (int d = 0; d < 3; ++d) box.min[d] = 0, box.max[d] = 1;
-  box.velocity[0] = 2;  // at t = 0.5 the box spans x in [1, 2]
-  double n[3];
-  const double outside[3] = {3, 0.5, 0.5}, corner[3] = {3, 2, 0.5}, inside[3] = {1.9, 0.5, 0.5};
-  EXPECT_DOUBLE_EQ(box.distance(outside, 0.5, n), 1);
-  EXPECT_DOUBLE_EQ(n[0], 1);
-  EXPECT_DOUBLE_EQ(box.distance(corner, 0.5, n), std::sqrt(2.0));
-  EXPECT_NEAR(box.distance(inside, 0.5, n), -0.1, 1e-12);
-  EXPECT_DOUBLE_EQ(n[0], 1);
-}
-
-TEST(Colliders, AStickyMovingPlaneImposesItsVelocity) {
-  Collider<double> plane;  // the solid is y < t (moving up at 1 m/s)
-  plane.velocity[1] = 1;
-  double v[3] = {3, -2, 1};
-  const double x_in[3] = {0, 0.4, 0}, x_out[3] = {0, 0.6, 0};
-  plane.apply(v, x_out, 0.5);
-  EXPECT_EQ(v[0], 3);
-  plane.apply(v, x_in, 0.5);
-  EXPECT_EQ(v[0], 0);
-  EXPECT_EQ(v[1], 1);
-  EXPECT_EQ(v[2], 0);
-}
-
 // A load spreads its total force over the particles in its region: sum m a = F, ramped.
 TEST(Loads, TotalForceIsSharedByMassAndRamped) {
   SimulationConfig c;

@@ -1,6 +1,7 @@
 // Particle frames as VTK XML PolyData (.vtp, "appended raw" binary, UInt64 headers), which
-// ParaView and vtkXMLPolyDataReader open: one vertex per particle, in particle id order so that
-// index i is the same particle in every frame. Arrays: velocity, id, material, J (total volume
+// ParaView and vtkXMLPolyDataReader open: one vertex per particle, in increasing particle id (while
+// no particle is added or removed, index i is the same particle in every frame; the id array
+// always names it). Arrays: velocity, id, material, J (total volume
 // ratio), von_mises (Cauchy stress, Pa), and the material state fields allocated in this run
 // (plastic_strain, Jp).
 #pragma once
@@ -42,8 +43,7 @@ template <class T, class Backend>
 void write_particles_vtp(const std::string& path, Simulation<T, Backend>& sim) {
   const ParticleView<T> pv = sim.particles();
   const std::size_t n = pv.n;
-  std::vector<std::uint32_t> by_id(n);
-  for (std::size_t p = 0; p < n; ++p) by_id[pv.id[p]] = std::uint32_t(p);
+  const std::vector<std::uint32_t> by_id = sim.id_order();
   std::vector<T> x(3 * n), v(3 * n), J(n), vm(n), alpha, Jp;
   std::vector<std::int32_t> material(n);
   std::vector<std::uint32_t> id(n);

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,14 +26,48 @@ struct BodySpec {
 };
 
 struct ColliderSpec {
-  enum class Kind { plane, box };
+  enum class Kind { plane, box, cylinder };
   std::string name;
   Kind kind = Kind::plane;
   Point point = {0, 0, 0}, normal = {0, 1, 0};  // plane: a point on it, the normal out of the solid
   Point min = {0, 0, 0}, max = {0, 0, 0};       // box
+  Point center = {0, 0, 0};                     // cylinder
+  double radius = 0, length = 0;                // cylinder
+  int axis = 2;                                 // cylinder: 0 x, 1 y, 2 z
   Point velocity = {0, 0, 0};
+  Point angular_velocity = {0, 0, 0};  // about the shape's centre (plane: its point)
+  WallType boundary = WallType::sticky;
+  Friction<double> friction{};
+};
+
+// The tire of the thesis' experiment (issue 5): a rigid tire collider with a tread pattern on an
+// axle along z at `center`, turning so that its tread at the ground moves toward -x at `speed`
+// (the tire rolls toward +x over ground that moves toward -x).
+struct TireSpec {
+  std::string tread = "angled_footstep";
+  Point center = {0, 0, 0};
+  double radius = 0, width = 0, tread_depth = 0;
+  int pitches = 0;
+  double speed = 0;  // surface speed (m/s)
+  bool loaded = false;
+  double load = 0, mass = 0;  // loaded axle
+  WallType boundary = WallType::separate;
+  Friction<double> friction{};
+};
+
+// A conveyor snow bed (issue 5): the ground y <= `ground` moves toward -x at `speed` carrying a
+// layer of snow `depth` deep over z in [z_min, z_max]; snow enters at x = inflow on the ground's
+// particle lattice and is removed beyond x = outflow (or when it nears the domain's boundary).
+struct ConveyorSpec {
+  int material = 0;  // index into SceneSpec::materials
+  double speed = 0, ground = 0, depth = 0, z_min = 0, z_max = 0, inflow = 0, outflow = 0;
   WallType boundary = WallType::sticky;
   double friction = 0;
+};
+
+struct MetricsSpec {
+  double displaced_distance = 0.01;  // a particle this far from its undisturbed place is displaced
+  bool footprint = true;             // the tire's contact pressure map per frame
 };
 
 struct LoadSpec {
@@ -60,6 +95,9 @@ struct SceneSpec {
   std::vector<BodySpec> bodies;
   std::vector<ColliderSpec> colliders;
   std::vector<LoadSpec> loads;
+  std::optional<TireSpec> tire;
+  std::optional<ConveyorSpec> conveyor;
+  MetricsSpec metrics;
   RenderSpec render;
   int per_axis() const;  // cube root of particles_per_cell
 };

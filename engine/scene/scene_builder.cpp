@@ -1,5 +1,9 @@
 #include "engine/scene/scene_builder.hpp"
 
+#include <cmath>
+
+#include "engine/tread_patterns.hpp"
+
 namespace firn {
 namespace {
 
@@ -16,7 +20,82 @@ struct SplitMix64 {
   double uniform() { return double(next() >> 11) * 0x1.0p-53; }  // [0, 1)
 };
 
+// A rotation whose body y axis is the unit vector n (the other two axes complete a right-handed frame).
+void frame_with_y_axis(const Point& n, double r[9]) {
+  const Point a = std::fabs(n[0]) < 0.9 ? Point{1, 0, 0} : Point{0, 0, 1};
+  Point x = {a[1] * n[2] - a[2] * n[1], a[2] * n[0] - a[0] * n[2], a[0] * n[1] - a[1] * n[0]};  // a x n
+  const double len = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+  for (double& c : x) c /= len;
+  const Point z = {x[1] * n[2] - x[2] * n[1], x[2] * n[0] - x[0] * n[2], x[0] * n[1] - x[1] * n[0]};  // x x n
+  for (int i = 0; i < 3; ++i) {
+    r[3 * i + 0] = x[i];
+    r[3 * i + 1] = n[i];
+    r[3 * i + 2] = z[i];
+  }
+}
+
 }  // namespace
+
+ColliderBody collider_body(const ColliderSpec& c) {
+  Collider<double> k;
+  k.boundary = c.boundary;
+  k.friction = c.friction;
+  for (int d = 0; d < 3; ++d) {
+    k.velocity[d] = c.velocity[d];
+    k.angular_velocity[d] = c.angular_velocity[d];
+  }
+  switch (c.kind) {
+    case ColliderSpec::Kind::plane:
+      k.shape = ColliderShape::plane;
+      for (int d = 0; d < 3; ++d) k.center[d] = c.point[d];
+      frame_with_y_axis(c.normal, k.rotation);
+      break;
+    case ColliderSpec::Kind::box:
+      k.shape = ColliderShape::box;
+      for (int d = 0; d < 3; ++d) {
+        k.center[d] = 0.5 * (c.min[d] + c.max[d]);
+        k.half[d] = 0.5 * (c.max[d] - c.min[d]);
+      }
+      break;
+    case ColliderSpec::Kind::cylinder: {
+      k.shape = ColliderShape::cylinder;
+      for (int d = 0; d < 3; ++d) k.center[d] = c.center[d];
+      k.radius = c.radius;
+      k.half[2] = 0.5 * c.length;
+      // Body axes (x, y, z) = a cyclic permutation of the world axes ending with the cylinder's axis.
+      for (int i = 0; i < 9; ++i) k.rotation[i] = 0;
+      for (int b = 0; b < 3; ++b) k.rotation[3 * ((c.axis + 1 + b) % 3) + b] = 1;
+      break;
+    }
+  }
+  return ColliderBody(k);
+}
+
+ColliderBody tire_body(const TireSpec& t) {
+  Collider<double> k;
+  k.shape = ColliderShape::tire;
+  k.boundary = t.boundary;
+  k.friction = t.friction;
+  k.tire = make_tire_shape(t.tread, t.radius, t.width, t.tread_depth, t.pitches);
+  for (int d = 0; d < 3; ++d) k.center[d] = t.center[d];
+  k.angular_velocity[2] = -t.speed / t.radius;  // the tread at the bottom moves toward -x
+  ColliderBody body(k);
+  if (t.loaded) {
+    body.motion = ColliderBody::Motion::loaded_axle;
+    body.mass = t.mass;
+    body.load = t.load;
+  }
+  return body;
+}
+
+ColliderBody ground_body(const ConveyorSpec& c) {
+  Collider<double> k;  // a plane with body axes = world axes: the solid y <= ground
+  k.boundary = c.boundary;
+  k.friction = Friction<double>{FrictionLaw::coulomb, c.friction};
+  k.center[1] = c.ground;
+  k.velocity[0] = -c.speed;
+  return ColliderBody(k);
+}
 
 void fill_body(const SceneSpec& scene, std::size_t index, std::vector<Point>& positions, std::vector<Point>& velocities) {
   const BodySpec& body = scene.bodies[index];

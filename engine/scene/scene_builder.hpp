@@ -1,10 +1,14 @@
 // Turns a validated scene into a Simulation: materials, bodies filled on the particle lattice in
-// file order (a body never takes a lattice site inside an earlier body), colliders and loads.
+// file order (a body never takes a lattice site inside an earlier body), colliders, the tire, the
+// conveyor's ground and snow bed, and loads.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
+#include "engine/collider_body.hpp"
+#include "engine/conveyor.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/scene/scene_reader.hpp"
 #include "engine/simulation.hpp"
@@ -16,6 +20,17 @@ namespace firn {
 // for a body that gets no particles.
 void fill_body(const SceneSpec& scene, std::size_t index, std::vector<Point>& positions, std::vector<Point>& velocities);
 
+// The engine's colliders for a scene's [[colliders]] entry, its [tire] and its [conveyor] ground.
+ColliderBody collider_body(const ColliderSpec& spec);
+ColliderBody tire_body(const TireSpec& spec);
+ColliderBody ground_body(const ConveyorSpec& spec);
+
+// Which of the simulation's colliders the scene's tire and conveyor ground are (-1: none).
+struct BuiltScene {
+  int tire = -1;
+  int ground = -1;
+};
+
 // Rest volume of one particle: the lattice cell (dx / per_axis)^3.
 inline double particle_volume(const SceneSpec& scene) {
   const double h = scene.config.dx / scene.per_axis();
@@ -23,28 +38,34 @@ inline double particle_volume(const SceneSpec& scene) {
 }
 
 template <class T, class Backend>
-void build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
+BuiltScene build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
   for (const MaterialInfo& m : scene.materials) sim.add_material(m);
+  if (scene.tire) sim.enable(Attribute::x0);  // the displaced-snow metric compares with it
   std::vector<Point> positions, velocities;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     fill_body(scene, b, positions, velocities);
     sim.add_particles(scene.bodies[b].material, positions, velocities, particle_volume(scene));
   }
-  for (const ColliderSpec& c : scene.colliders) {
-    Collider<T> k;
-    k.shape = c.kind == ColliderSpec::Kind::plane ? ColliderShape::plane : ColliderShape::box;
-    k.boundary = c.boundary;
-    k.friction = T(c.friction);
-    for (int d = 0; d < 3; ++d) {
-      k.point[d] = T(c.point[d]);
-      k.normal[d] = T(c.normal[d]);
-      k.min[d] = T(c.min[d]);
-      k.max[d] = T(c.max[d]);
-      k.velocity[d] = T(c.velocity[d]);
+  BuiltScene built;
+  for (const ColliderSpec& c : scene.colliders) sim.add_collider(collider_body(c));
+  if (scene.tire) built.tire = sim.add_collider(tire_body(*scene.tire));
+  if (scene.conveyor) {
+    const ConveyorSpec& c = *scene.conveyor;
+    built.ground = sim.add_collider(ground_body(c));
+    std::vector<Point> bed = Conveyor(scene, c).initial_bed();
+    if (scene.tire) {  // the tire starts pressed into the snow: no particles inside it
+      const Collider<double>& tire = sim.collider(built.tire).collider;
+      bed.erase(std::remove_if(bed.begin(), bed.end(),
+                               [&](const Point& p) {
+                                 double n[3];
+                                 return tire.distance(p.data(), n) <= 0;
+                               }),
+                bed.end());
     }
-    sim.add_collider(k);
+    sim.add_particles(c.material, bed, Point{-c.speed, 0, 0}, particle_volume(scene));
   }
   for (const LoadSpec& l : scene.loads) sim.add_load(l.region_min, l.region_max, l.force, l.ramp_time);
+  return built;
 }
 
 }  // namespace firn

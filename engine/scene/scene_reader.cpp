@@ -166,6 +166,13 @@ class TableReader {
     const auto& c = spec(key).choices;
     return int(std::find(c.begin(), c.end(), v) - c.begin());
   }
+  bool boolean(const std::string& key) {
+    const KeySpec& k = spec(key);
+    const toml::node* n = value(k);
+    if (!n->is_boolean()) fail(key, "expected true or false, got " + type_name(*n));
+    out_.insert_or_assign(key, n->as_boolean()->get());
+    return n->as_boolean()->get();
+  }
   std::optional<std::string> text(const std::string& key) {
     const KeySpec& k = spec(key);
     const toml::node* n = value(k);
@@ -261,6 +268,24 @@ const toml::table& subtable(const Context& ctx, const toml::table& root, const s
   if (!n) return empty;
   if (!n->is_table()) ctx.fail(n, root.source(), name, "expected a table [" + name + "], got " + type_name(*n));
   return *n->as_table();
+}
+
+// The index of the material named by the table's `material` key.
+int material_index(TableReader& r, const std::vector<MaterialInfo>& materials) {
+  const std::string material = *r.text("material");
+  std::vector<std::string> names;
+  for (const auto& m : materials) names.push_back(m.name);
+  const auto it = std::find(names.begin(), names.end(), material);
+  if (it == names.end())
+    r.fail("material", "no material '" + material + "' (defined: " + join(names) + ")" + suggestion(material, names));
+  return int(it - names.begin());
+}
+
+Friction<double> read_friction(TableReader& r) {
+  Friction<double> f;
+  f.law = FrictionLaw(r.choice_index("friction_law"));
+  f.mu = r.number("friction");
+  return f;
 }
 
 BodyShape read_shape(const Context& ctx, TableReader& r, toml::table& out, const std::string& prefix) {
@@ -421,8 +446,8 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
   }
   for (const std::string& a : options.overrides) apply_override(ctx, root, a);
 
-  const std::vector<std::string> sections = {"simulation", "walls",   "materials", "bodies",
-                                             "colliders",  "loads",   "metrics",   "render"};
+  const std::vector<std::string> sections = {"simulation", "walls", "materials", "bodies",  "colliders",
+                                             "tire",       "conveyor", "loads",   "metrics", "render"};
   for (const auto& [name, node] : root) {
     const std::string key(name.str());
     if (std::find(sections.begin(), sections.end(), key) == sections.end())
@@ -519,22 +544,17 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
   // [[bodies]]
   {
     const toml::array* a = table_array("bodies");
-    if (!a || a->empty()) ctx.fail(nullptr, root.source(), "bodies", "no bodies: add a [[bodies]] table");
+    if ((!a || a->empty()) && !root.contains("conveyor"))
+      ctx.fail(nullptr, root.source(), "bodies", "no bodies: add a [[bodies]] table (or a [conveyor])");
     toml::array o;
-    std::vector<std::string> names;
-    for (const auto& m : s.materials) names.push_back(m.name);
-    for (std::size_t i = 0; i < a->size(); ++i) {
+    for (std::size_t i = 0; a && i < a->size(); ++i) {
       const std::string prefix = "bodies." + std::to_string(i);
       toml::table bo;
       TableReader r(ctx, *a->get(i)->as_table(), scene_section("bodies"), prefix, bo);
       BodySpec b;
       b.name = r.text("name").value_or("body " + std::to_string(i + 1));
       b.location = r.where("shape") + ": " + prefix;
-      const std::string material = *r.text("material");
-      const auto it = std::find(names.begin(), names.end(), material);
-      if (it == names.end())
-        r.fail("material", "no material '" + material + "' (defined: " + join(names) + ")" + suggestion(material, names));
-      b.material = int(it - names.begin());
+      b.material = material_index(r, s.materials);
       b.velocity = r.vec3("velocity");
       b.angular_velocity = r.vec3("angular_velocity");
       b.jitter = r.number("jitter");
@@ -551,7 +571,7 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
       s.bodies.push_back(b);
       o.push_back(std::move(bo));
     }
-    out.insert("bodies", std::move(o));
+    if (a) out.insert("bodies", std::move(o));
   }
   // [[colliders]]
   if (const toml::array* a = table_array("colliders")) {
@@ -560,7 +580,7 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
       toml::table co;
       TableReader r(ctx, *a->get(i)->as_table(), scene_section("colliders"), "colliders." + std::to_string(i), co);
       ColliderSpec c;
-      c.name = r.text("name").value_or("collider " + std::to_string(i + 1));
+      c.name = r.text("name").value_or("collider" + std::to_string(i + 1));
       const std::string shape = r.choice("shape");
       r.set_filter(shape);
       if (shape == "plane") {
@@ -570,15 +590,22 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
         const double len = std::sqrt(c.normal[0] * c.normal[0] + c.normal[1] * c.normal[1] + c.normal[2] * c.normal[2]);
         if (!(len > 0)) r.fail("normal", "must not be zero");
         for (double& v : c.normal) v /= len;
-      } else {
+      } else if (shape == "box") {
         c.kind = ColliderSpec::Kind::box;
         c.min = r.vec3("min");
         c.max = r.vec3("max");
         r.require_above("max", c.max, "min", c.min);
+      } else {
+        c.kind = ColliderSpec::Kind::cylinder;
+        c.center = r.vec3("center");
+        c.radius = r.number("radius");
+        c.length = r.number("length");
+        c.axis = r.choice_index("axis");
       }
       c.velocity = r.vec3("velocity");
+      c.angular_velocity = r.vec3("angular_velocity");
       c.boundary = WallType(r.choice_index("boundary") + 1);
-      c.friction = r.number("friction");
+      c.friction = read_friction(r);
       r.finish();
       s.colliders.push_back(c);
       o.push_back(std::move(co));
@@ -586,6 +613,67 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
     if (int(s.colliders.size()) > kMaxColliders)
       ctx.fail(a, root.source(), "colliders", "at most " + std::to_string(kMaxColliders) + " colliders");
     out.insert("colliders", std::move(o));
+  }
+  // [tire]
+  if (root.contains("tire")) {
+    toml::table o;
+    TableReader r(ctx, subtable(ctx, root, "tire", empty), scene_section("tire"), "tire", o);
+    TireSpec t;
+    t.tread = r.choice("tread");
+    t.center = r.vec3("center");
+    t.radius = r.number("radius");
+    t.width = r.number("width");
+    t.tread_depth = r.number("tread_depth");
+    if (!(t.tread_depth < t.radius)) r.fail("tread_depth", "must be less than the radius");
+    t.pitches = int(r.integer("pitches"));
+    t.speed = r.number("speed");
+    const std::string axle = r.choice("axle");
+    r.set_filter(axle);
+    t.loaded = axle == "loaded";
+    if (t.loaded) {
+      t.load = r.number("load");
+      t.mass = r.number("mass");
+    }
+    t.boundary = WallType(r.choice_index("boundary") + 1);
+    t.friction = read_friction(r);
+    r.finish();
+    for (int d = 0; d < 3; ++d) {
+      const double reach = d == 2 ? 0.5 * t.width : t.radius;
+      if (t.center[d] - reach < s.config.domain_min[d] || t.center[d] + reach > s.config.domain_max[d])
+        r.fail("center", std::string("the tire extends outside the domain along ") + "xyz"[d]);
+    }
+    s.tire = t;
+    out.insert("tire", std::move(o));
+  }
+  // [conveyor]
+  if (root.contains("conveyor")) {
+    toml::table o;
+    TableReader r(ctx, subtable(ctx, root, "conveyor", empty), scene_section("conveyor"), "conveyor", o);
+    ConveyorSpec c;
+    c.material = material_index(r, s.materials);
+    c.speed = r.number("speed");
+    c.ground = r.number("ground");
+    c.depth = r.number("depth");
+    c.z_min = r.number("z_min");
+    c.z_max = r.number("z_max");
+    if (!(c.z_max > c.z_min)) r.fail("z_max", "must exceed z_min");
+    const double margin = 4 * s.config.dx;  // 4 cells: outside every shape function's reach of a wall
+    const auto inflow = r.optional_number("inflow"), outflow = r.optional_number("outflow");
+    c.inflow = inflow ? *inflow : s.config.domain_max[0] - margin;
+    c.outflow = outflow ? *outflow : s.config.domain_min[0] + margin;
+    o.insert_or_assign("inflow", c.inflow);
+    o.insert_or_assign("outflow", c.outflow);
+    if (!(c.inflow > c.outflow)) r.fail("inflow", "must exceed outflow");
+    if (c.inflow > s.config.domain_max[0] - margin || c.outflow < s.config.domain_min[0] + margin)
+      r.fail(inflow ? "inflow" : "outflow", "must lie at least 4 cells inside the domain");
+    if (c.ground - margin < s.config.domain_min[1] || c.ground + c.depth > s.config.domain_max[1] - margin ||
+        c.z_min < s.config.domain_min[2] + margin || c.z_max > s.config.domain_max[2] - margin)
+      r.fail("ground", "the snow bed must lie at least 4 cells inside the domain");
+    c.boundary = WallType(r.choice_index("boundary") + 1);
+    c.friction = r.number("friction");
+    r.finish();
+    s.conveyor = c;
+    out.insert("conveyor", std::move(o));
   }
   // [[loads]]
   if (const toml::array* a = table_array("loads")) {
@@ -608,7 +696,11 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
   // [metrics], [render]
   {
     toml::table mo, ro;
-    TableReader(ctx, subtable(ctx, root, "metrics", empty), scene_section("metrics"), "metrics", mo).finish();
+    TableReader m(ctx, subtable(ctx, root, "metrics", empty), scene_section("metrics"), "metrics", mo);
+    s.metrics.displaced_distance = m.number("displaced_distance");
+    s.metrics.footprint = m.boolean("footprint");
+    m.finish();
+    out.insert("metrics", std::move(mo));
     TableReader r(ctx, subtable(ctx, root, "render", empty), scene_section("render"), "render", ro);
     s.render.style = r.choice("style");
     s.render.color_by = r.choice("color_by");

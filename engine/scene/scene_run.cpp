@@ -8,11 +8,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <sstream>
 
 #include "engine/output/atomic_file.hpp"
 #include "engine/output/vtp_writer.hpp"
 #include "engine/scene/scene_builder.hpp"
+#include "engine/scene/scene_metrics.hpp"
 #include "kernels/backend/openmp.hpp"
 
 namespace firn {
@@ -45,7 +47,11 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
   backend::OpenMP omp;
   if (options.threads > 0) omp.thread_count = options.threads;
   Simulation<T, backend::OpenMP> sim(scene.config, omp);
-  build_scene(scene, sim);
+  const BuiltScene built = build_scene(scene, sim);
+  std::optional<Conveyor> conveyor;
+  if (scene.conveyor) conveyor.emplace(scene, *scene.conveyor);
+  SceneMetrics<T, backend::OpenMP> scene_metrics(scene, built, conveyor ? &*conveyor : nullptr);
+  scene_metrics.prepare(sim);
   sim.prepare();
 
   RunSummary summary;
@@ -54,16 +60,18 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
   summary.precision = scene.precision;
 
   make_directory(options.out_dir + "/particles");
+  if (scene_metrics.writes_footprint()) make_directory(options.out_dir + "/footprint");
   write_file_atomically(options.out_dir + "/scene.resolved.toml", loaded.resolved_toml);
   std::string metrics =
-      "frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,max_speed,min_J\n";
+      "frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,max_speed,min_J" +
+      scene_metrics.header() + "\n";
   auto write_frame = [&](int frame) {
     const Diagnostics d = sim.diagnostics();
     char row[512];
-    std::snprintf(row, sizeof row, "%d,%ld,%.9g,%.9g,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", frame, sim.steps(),
+    std::snprintf(row, sizeof row, "%d,%ld,%.9g,%.9g,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", frame, sim.steps(),
                   sim.time(), sim.last_dt(), sim.particle_count(), d.kinetic_energy, d.elastic_energy, d.momentum[0],
                   d.momentum[1], d.momentum[2], d.max_speed, d.min_J);
-    metrics += row;
+    metrics += row + scene_metrics.row(sim, options.out_dir + "/footprint/" + frame_name(frame)) + "\n";
     write_particles_vtp(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
     write_file_atomically(options.out_dir + "/metrics.csv", metrics);
   };
@@ -77,6 +85,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
       while (sim.time() < target * (1 - 1e-12)) {
         if (options.interrupt && options.interrupt->load()) throw std::runtime_error("interrupted");
         const auto t0 = Clock::now();
+        if (conveyor) conveyor->update(sim, sim.time());
         sim.step(std::min(sim.next_dt(), target - sim.time()));
         step_seconds += seconds_since(t0);
         if (options.progress) options.progress({sim.time(), scene.end_time, sim.steps(), f, frames, step_seconds});

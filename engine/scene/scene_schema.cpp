@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "engine/material_catalog.hpp"
+#include "engine/tread_patterns.hpp"
 
 namespace firn {
 namespace {
@@ -128,20 +129,85 @@ std::vector<SectionSpec> build_schema() {
   s.push_back({"bodies.parts", true, "A shape inside a union or difference (the same shape keys as a body).",
                geometry});
 
+  const std::vector<std::string> kFrictionLaws = {"coulomb", "velocity_dependent"};
   s.push_back({"colliders", true, "Kinematic rigid solids that act on the grid.",
                {
-                   {"name", K::text, Q::dimensionless, "", false, "label used in messages"},
-                   {"shape", K::choice, Q::dimensionless, "", true, "plane (a half-space) or box", -kInf, kInf, false,
-                    {"plane", "box"}},
+                   {"name", K::text, Q::dimensionless, "", false, "label used in messages and metrics.csv columns"},
+                   {"shape", K::choice, Q::dimensionless, "", true, "plane (a half-space), box or cylinder", -kInf,
+                    kInf, false, {"plane", "box", "cylinder"}},
                    {"point", K::vector3, Q::length, "", true, "a point on the plane", -kInf, kInf, false, {}, "plane"},
                    {"normal", K::vector3, Q::dimensionless, "", true, "normal pointing out of the solid", -kInf, kInf,
                     false, {}, "plane"},
                    {"min", K::vector3, Q::length, "", true, "lower corner at t = 0", -kInf, kInf, false, {}, "box"},
                    {"max", K::vector3, Q::length, "", true, "upper corner at t = 0", -kInf, kInf, false, {}, "box"},
+                   {"center", K::vector3, Q::length, "", true, "centre at t = 0", -kInf, kInf, false, {}, "cylinder"},
+                   {"radius", K::number, Q::length, "", true, "radius", 0, kInf, true, {}, "cylinder"},
+                   {"length", K::number, Q::length, "", true, "length along the axis", 0, kInf, true, {}, "cylinder"},
+                   {"axis", K::choice, Q::dimensionless, "\"z\"", false, "axis direction", -kInf, kInf, false,
+                    {"x", "y", "z"}, "cylinder"},
                    {"velocity", K::vector3, Q::velocity, "[0.0, 0.0, 0.0]", false, "constant velocity"},
+                   {"angular_velocity", K::vector3, Q::angular_velocity, "[0.0, 0.0, 0.0]", false,
+                    "constant angular velocity about the centre (plane: about `point`)"},
                    {"boundary", K::choice, Q::dimensionless, "\"sticky\"", false,
                     "sticky, slip or separate (see walls)", -kInf, kInf, false, kBoundaries},
-                   {"friction", K::number, Q::dimensionless, "0.0", false, "Coulomb friction coefficient", 0, kInf},
+                   {"friction_law", K::choice, Q::dimensionless, "\"coulomb\"", false,
+                    "coulomb, or velocity_dependent: the thesis' Eq. 4.9, mu(v) = mu0 (12101 v / (v^2 + 12100))^0.17 "
+                    "with v the slip speed in mm/s",
+                    -kInf, kInf, false, kFrictionLaws},
+                   {"friction", K::number, Q::dimensionless, "0.0", false,
+                    "friction coefficient (velocity_dependent: mu0, the value at 1 mm/s)", 0, kInf},
+               }});
+  std::vector<std::string> treads;
+  for (const TreadPattern& t : tread_patterns()) treads.push_back(t.name);
+  s.push_back({"tire", false,
+               "The tire of the thesis' experiment: a rigid collider with a tread pattern, its axle along z "
+               "through `center`, turning so that the tread at the ground moves toward -x at `speed` (the tire "
+               "rolls toward +x). Its grooves are exact at any grid size (a signed distance function). "
+               "Defaults: a scaled test tire (400 mm diameter, 125 mm wide, 12 mm tread depth, 12 pitches).",
+               {
+                   {"tread", K::choice, Q::dimensionless, "\"angled_footstep\"", false,
+                    "tread pattern (see Tread patterns)", -kInf, kInf, false, treads},
+                   {"center", K::vector3, Q::length, "", true, "axle centre at t = 0"},
+                   {"radius", K::number, Q::length, "0.2", false, "outer radius (top of the tread)", 0, kInf, true},
+                   {"width", K::number, Q::length, "0.125", false, "tread width", 0, kInf, true},
+                   {"tread_depth", K::number, Q::length, "0.012", false, "depth of the grooves", 0, kInf},
+                   {"pitches", K::integer, Q::dimensionless, "12", false,
+                    "repetitions of the pattern around the circumference", 1, 200},
+                   {"speed", K::number, Q::velocity, "\"10 mph\"", false,
+                    "surface speed of the tread (the thesis: 5, 10 or 20 mph over ground at 10 mph)", 0, kInf},
+                   {"axle", K::choice, Q::dimensionless, "\"fixed\"", false,
+                    "fixed (prescribed height) or loaded (moves vertically under `load` and the snow's reaction)",
+                    -kInf, kInf, false, {"fixed", "loaded"}},
+                   {"load", K::number, Q::force, "", true, "downward load on the axle, the tire's weight included",
+                    0, kInf, false, {}, "loaded"},
+                   {"mass", K::number, Q::mass, "10.0", false, "mass of the tire and wheel", 0, kInf, true, {},
+                    "loaded"},
+                   {"boundary", K::choice, Q::dimensionless, "\"separate\"", false,
+                    "sticky, slip or separate (see walls)", -kInf, kInf, false, kBoundaries},
+                   {"friction_law", K::choice, Q::dimensionless, "\"velocity_dependent\"", false,
+                    "coulomb or velocity_dependent (see colliders)", -kInf, kInf, false, kFrictionLaws},
+                   {"friction", K::number, Q::dimensionless, "0.25", false,
+                    "friction coefficient (velocity_dependent: mu0; the thesis: 0.25 on snow, range 0.12-0.39)", 0,
+                    kInf},
+               }});
+  s.push_back({"conveyor", false,
+               "A snow bed on moving ground: the ground (y below `ground`) moves toward -x at `speed` carrying "
+               "snow `depth` deep; snow enters at `inflow` on the ground's particle lattice with the ground's "
+               "speed and is removed beyond `outflow` or when it comes within 4 cells of the domain's boundary, "
+               "so a long roll runs in a bounded domain with a bounded particle count.",
+               {
+                   {"material", K::text, Q::dimensionless, "", true, "NAME of the snow's [materials.NAME] table"},
+                   {"speed", K::number, Q::velocity, "\"10 mph\"", false, "ground speed (toward -x)", 0, kInf},
+                   {"ground", K::number, Q::length, "", true, "height of the ground surface"},
+                   {"depth", K::number, Q::length, "", true, "depth of the snow", 0, kInf, true},
+                   {"z_min", K::number, Q::length, "", true, "lower lateral edge of the snow"},
+                   {"z_max", K::number, Q::length, "", true, "upper lateral edge of the snow"},
+                   {"inflow", K::number, Q::length, "", false, "x where snow enters (default: 4 cells inside x max)"},
+                   {"outflow", K::number, Q::length, "", false,
+                    "x beyond which snow is removed (default: 4 cells inside x min)"},
+                   {"boundary", K::choice, Q::dimensionless, "\"sticky\"", false,
+                    "boundary of the ground: sticky, slip or separate", -kInf, kInf, false, kBoundaries},
+                   {"friction", K::number, Q::dimensionless, "0.0", false, "Coulomb friction of the ground", 0, kInf},
                }});
   s.push_back({"loads", true,
                "A total force on the particles inside a box when the run starts, shared in proportion to mass.",
@@ -152,7 +218,20 @@ std::vector<SectionSpec> build_schema() {
                    {"ramp_time", K::number, Q::time, "0.0", false,
                     "the force grows linearly from zero over this time (0: applied at once)", 0, kInf},
                }});
-  s.push_back({"metrics", false, "Scene metrics beyond the standard metrics.csv columns (none yet).", {}});
+  s.push_back({"metrics", false,
+               "Scene metrics beyond the standard metrics.csv columns. Every collider adds its force and "
+               "torque (`NAME_fx` ... `NAME_tz`, on the collider, averaged over the frame); a [tire] adds "
+               "`traction`, `vertical_load`, `axle_torque`, `slip_ratio`, `axle_height`, `displaced` and "
+               "`accumulated` and, with `footprint`, footprint/NNNNN.csv and .png; a [conveyor] adds `injected` "
+               "and `removed`.",
+               {
+                   {"displaced_distance", K::number, Q::length, "0.01", false,
+                    "a particle farther than this from where the undisturbed ground would have carried it counts "
+                    "as displaced (the thesis' Table 5.1)",
+                    0, kInf, true},
+                   {"footprint", K::boolean, Q::dimensionless, "true", false,
+                    "write the tire's contact pressure map every frame"},
+               }});
   s.push_back({"render", false, "How frames are drawn when rendering is on (`firn run --render`).",
                {
                    {"style", K::choice, Q::dimensionless, "\"spheres\"", false, "none, spheres or surface", -kInf,
@@ -231,6 +310,11 @@ std::string scene_reference_markdown() {
     }
     md << "\n";
   }
+  md << "## Tread patterns\n\nUse as `tread = \"NAME\"` in [tire]; blocks are drawn in engine/tread_patterns.cpp.\n\n"
+        "| tread | blocks per pitch | description |\n|---|---|---|\n";
+  for (const TreadPattern& t : tread_patterns())
+    md << "| `" << t.name << "` | " << t.blocks.size() << " | " << escape_bars(t.doc) << " |\n";
+  md << "\n";
   md << "## Material presets\n\nUse as `preset = \"NAME\"` in a `[materials.NAME]` table.\n\n"
         "| preset | model | values (SI) | source |\n|---|---|---|---|\n";
   for (const MaterialPreset& p : material_presets()) {

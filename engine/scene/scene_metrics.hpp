@@ -1,0 +1,127 @@
+// The scene's own metrics.csv columns, after the standard ones (DESIGN.md section 5; issue 5,
+// "Metrics"). Each scene pays only for what it has:
+//   every collider NAME: NAME_fx, NAME_fy, NAME_fz (force on it, N) and NAME_tx, NAME_ty, NAME_tz
+//     (torque about its centre, N m), averaged over the frame;
+//   a [tire]: traction (its force along +x, the direction it rolls), vertical_load (its force along
+//     +y), axle_torque (about +z), slip_ratio ((surface speed - ground speed) / ground speed, 0
+//     without a conveyor), axle_height, peak_pressure (the footprint's peak, Pa, when written),
+//     displaced (particles farther than metrics.displaced_distance from where the undisturbed
+//     ground would have carried them: x0 - U t e_x; the thesis' Table 5.1) and accumulated
+//     (particles inside the tread's outer radius and width: snow carried in the tread, Figure 5.6);
+//   a [conveyor]: injected and removed (particles, since the start).
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "engine/conveyor.hpp"
+#include "engine/output/footprint_writer.hpp"
+#include "engine/scene/scene.hpp"
+#include "engine/scene/scene_builder.hpp"
+#include "engine/simulation.hpp"
+
+namespace firn {
+
+template <class T, class Backend>
+class SceneMetrics {
+ public:
+  SceneMetrics(const SceneSpec& scene, const BuiltScene& built, const Conveyor* conveyor)
+      : scene_(scene), built_(built), conveyor_(conveyor) {
+    for (const ColliderSpec& c : scene.colliders) names_.push_back(c.name);
+    if (built.tire >= 0) names_.push_back("tire");
+    if (built.ground >= 0) names_.push_back("ground");
+  }
+
+  // Starts the footprint map when the scene writes one.
+  void prepare(Simulation<T, Backend>& sim) const {
+    if (writes_footprint()) sim.enable_footprint(built_.tire);
+  }
+  bool writes_footprint() const { return built_.tire >= 0 && scene_.metrics.footprint; }
+
+  // ",NAME,..." to append to the standard header.
+  std::string header() const {
+    std::string h;
+    for (const std::string& n : names_)
+      for (const char* c : {"_fx", "_fy", "_fz", "_tx", "_ty", "_tz"}) h += "," + n + c;
+    if (built_.tire >= 0) {
+      h += ",traction,vertical_load,axle_torque,slip_ratio,axle_height";
+      if (writes_footprint()) h += ",peak_pressure";
+      h += ",displaced,accumulated";
+    }
+    if (conveyor_) h += ",injected,removed";
+    return h;
+  }
+
+  // ",VALUE,..." for the frame that ends now; writes the footprint files under `footprint_stem`
+  // (when the scene has them) and restarts the frame's averages.
+  std::string row(Simulation<T, Backend>& sim, const std::string& footprint_stem) {
+    std::string r;
+    for (std::size_t c = 0; c < sim.collider_count(); ++c) {
+      ColliderBody& b = sim.collider(int(c));
+      const double inv = b.impulse_time > 0 ? 1 / b.impulse_time : 0;
+      for (double v : b.impulse) r += number(v * inv);
+      for (double v : b.angular_impulse) r += number(v * inv);
+    }
+    if (built_.tire >= 0) {
+      const ColliderBody& tire = sim.collider(built_.tire);
+      const double inv = tire.impulse_time > 0 ? 1 / tire.impulse_time : 0;
+      const double ground_speed = conveyor_ ? conveyor_->spec().speed : 0;
+      r += number(tire.impulse[0] * inv) + number(tire.impulse[1] * inv) + number(tire.angular_impulse[2] * inv);
+      r += number(ground_speed > 0 ? (scene_.tire->speed - ground_speed) / ground_speed : 0);
+      r += number(tire.collider.center[1]);
+      if (writes_footprint()) {
+        const TireSpec& t = *scene_.tire;
+        const FootprintWindow w{tire.collider.center[0], tire.collider.center[2], t.radius,
+                                0.5 * t.width + 2 * scene_.config.dx};
+        r += number(write_footprint(footprint_stem, sim.footprint(), w));
+        sim.footprint().reset();
+      }
+      const SnowCounts n = count_snow(sim, ground_speed);
+      r += number(double(n.displaced)) + number(double(n.accumulated));
+    }
+    if (conveyor_) r += number(double(conveyor_->injected())) + number(double(conveyor_->removed()));
+    for (std::size_t c = 0; c < sim.collider_count(); ++c) sim.collider(int(c)).reset_impulse();
+    return r;
+  }
+
+ private:
+  struct SnowCounts {
+    std::size_t displaced = 0, accumulated = 0;
+  };
+
+  SnowCounts count_snow(Simulation<T, Backend>& sim, double ground_speed) const {
+    const ParticleView<T> pv = sim.particles();
+    const Collider<double>& c = sim.collider(built_.tire).collider;
+    const T cx = T(c.center[0]), cy = T(c.center[1]), cz = T(c.center[2]);
+    const T radius2 = T(scene_.tire->radius * scene_.tire->radius), half_width = T(0.5 * scene_.tire->width);
+    const T shift = T(ground_speed * sim.time());
+    const T limit2 = T(scene_.metrics.displaced_distance * scene_.metrics.displaced_distance);
+    return sim.backend().parallel_reduce(
+        "metrics.snow", pv.n, SnowCounts{},
+        [=](std::size_t p, SnowCounts& acc) {
+          const T dx = pv.x[0][p] - (pv.x0[0][p] - shift), dy = pv.x[1][p] - pv.x0[1][p], dz = pv.x[2][p] - pv.x0[2][p];
+          acc.displaced += dx * dx + dy * dy + dz * dz > limit2;
+          const T rx = pv.x[0][p] - cx, ry = pv.x[1][p] - cy;
+          acc.accumulated += rx * rx + ry * ry <= radius2 && std::fabs(pv.x[2][p] - cz) <= half_width;
+        },
+        [](SnowCounts& a, const SnowCounts& b) {
+          a.displaced += b.displaced;
+          a.accumulated += b.accumulated;
+        });
+  }
+
+  static std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, ",%.9g", v);
+    return buf;
+  }
+
+  const SceneSpec& scene_;
+  BuiltScene built_;
+  const Conveyor* conveyor_;
+  std::vector<std::string> names_;
+};
+
+}  // namespace firn

@@ -1,0 +1,140 @@
+// Colliders on the grid: shapes, rigid motion, boundary conditions, friction laws, and the
+// reaction force and torque they feel.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/collider_body.hpp"
+#include "kernels/backend/serial.hpp"
+#include "engine/simulation.hpp"
+#include "kernels/colliders.hpp"
+#include "kernels/friction.hpp"
+
+namespace firn {
+namespace {
+
+TEST(Colliders, BoxDistanceAndNormalAreExact) {
+  Collider<double> box;
+  box.shape = ColliderShape::box;
+  box.center[0] = 1.5, box.center[1] = box.center[2] = 0.5;  // spans [1, 2] x [0, 1] x [0, 1]
+  for (double& h : box.half) h = 0.5;
+  double n[3];
+  const double outside[3] = {3, 0.5, 0.5}, corner[3] = {3, 2, 0.5}, inside[3] = {1.9, 0.5, 0.5};
+  EXPECT_DOUBLE_EQ(box.distance(outside, n), 1);
+  EXPECT_DOUBLE_EQ(n[0], 1);
+  EXPECT_DOUBLE_EQ(box.distance(corner, n), std::sqrt(2.0));
+  EXPECT_NEAR(box.distance(inside, n), -0.1, 1e-12);
+  EXPECT_DOUBLE_EQ(n[0], 1);
+}
+
+TEST(Colliders, ARotatedBoxIsMeasuredInItsOwnFrame) {
+  Collider<double> box;  // a unit cube turned 90 degrees about z: its body x axis is world y
+  box.shape = ColliderShape::box;
+  box.half[0] = 2, box.half[1] = 0.5, box.half[2] = 0.5;
+  const double r[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+  for (int i = 0; i < 9; ++i) box.rotation[i] = r[i];
+  double n[3];
+  const double above[3] = {0, 3, 0}, beside[3] = {1, 0, 0};
+  EXPECT_NEAR(box.distance(above, n), 1, 1e-12);  // 2 long along world y
+  EXPECT_NEAR(n[1], 1, 1e-12);
+  EXPECT_NEAR(box.distance(beside, n), 0.5, 1e-12);
+  EXPECT_NEAR(n[0], 1, 1e-12);
+}
+
+TEST(Colliders, AStickyMovingPlaneImposesItsVelocity) {
+  Collider<double> plane;  // the solid y <= 0.5, moving up at 1 m/s
+  plane.center[1] = 0.5;
+  plane.velocity[1] = 1;
+  double v[3] = {3, -2, 1};
+  const double x_in[3] = {0, 0.4, 0}, x_out[3] = {0, 0.6, 0};
+  EXPECT_FALSE(plane.apply(v, x_out));
+  EXPECT_EQ(v[0], 3);
+  EXPECT_TRUE(plane.apply(v, x_in));
+  EXPECT_EQ(v[0], 0);
+  EXPECT_EQ(v[1], 1);
+  EXPECT_EQ(v[2], 0);
+}
+
+// A spinning sticky cylinder gives a node inside it the rigid velocity omega x r.
+TEST(Colliders, ASpinningCylinderImposesOmegaCrossR) {
+  Collider<double> wheel;
+  wheel.shape = ColliderShape::cylinder;
+  wheel.radius = 1, wheel.half[2] = 0.5;
+  wheel.center[0] = 2;
+  wheel.angular_velocity[2] = -3;
+  double v[3] = {0, 0, 0}, n[3];
+  const double bottom[3] = {2, -0.9, 0.1};
+  EXPECT_NEAR(wheel.distance(bottom, n), -0.1, 1e-12);
+  EXPECT_NEAR(n[1], -1, 1e-12);
+  EXPECT_TRUE(wheel.apply(v, bottom));
+  EXPECT_NEAR(v[0], -2.7, 1e-12);  // (0, 0, -3) x (0, -0.9, 0.1) = (-2.7, 0, 0)
+  EXPECT_NEAR(v[1], 0, 1e-12);
+}
+
+// The thesis' Figure 4.1: mu rises from 0 to mu0 at 1 mm/s, peaks at 110 mm/s, then falls.
+TEST(Friction, VelocityDependentLawFollowsTheThesisCurve) {
+  const Friction<double> f{FrictionLaw::velocity_dependent, 0.25};
+  EXPECT_EQ(f.coefficient(0), 0);
+  EXPECT_NEAR(f.coefficient(1e-3), 0.25, 1e-12);  // Eq. 4.9 at v = 1 mm/s: (12101 / 12101)^0.17
+  const double peak = f.coefficient(0.110);
+  EXPECT_NEAR(peak, 0.25 * std::pow(12101.0 * 110 / (2 * 12100), 0.17), 1e-12);
+  EXPECT_NEAR(peak, 0.494, 1e-3);
+  EXPECT_GT(peak, f.coefficient(0.100));
+  EXPECT_GT(peak, f.coefficient(0.120));
+  EXPECT_NEAR(f.coefficient(4.4704), 0.296, 1e-3);  // 10 mph
+  EXPECT_LT(f.coefficient(10), f.coefficient(1));
+  const Friction<double> coulomb{FrictionLaw::coulomb, 0.3};
+  EXPECT_EQ(coulomb.coefficient(0), 0.3);
+  EXPECT_EQ(coulomb.coefficient(7), 0.3);
+}
+
+// Friction at an approaching node: the normal velocity goes, the tangential one loses mu |v_n|.
+TEST(Friction, WallUsesTheCoefficientAtTheSlipSpeed) {
+  const double up[3] = {0, 1, 0};
+  double v[3] = {0.110, -0.05, 0};
+  apply_wall(v, up, WallType::separate, Friction<double>{FrictionLaw::velocity_dependent, 0.25});
+  const double mu = Friction<double>{FrictionLaw::velocity_dependent, 0.25}.coefficient(0.110);
+  EXPECT_NEAR(v[0], 0.110 - mu * 0.05, 1e-15);
+  EXPECT_EQ(v[1], 0);
+}
+
+// A block of particles dropped on a fixed floor box: once resting, the floor carries its weight
+// (force = m g upward... on the floor, downward), and the loaded axle's equation moves a collider.
+TEST(ColliderReaction, AFloorCarriesTheWeightOfABlockResting) {
+  SimulationConfig c;
+  c.dx = 0.02;
+  Simulation<double, backend::Serial> sim(c);
+  sim.add_material({"rubber", "neo_hookean", 1000, ElasticModuli::from_E_nu(2e5, 0.3)});
+  const double h = c.dx / 2;
+  const auto x = fill_box({0, 0, 0}, c.dx, 2, {0.4, 0.3, 0.4}, {0.6, 0.4, 0.6});
+  sim.add_particles(0, x, {0, 0, 0}, h * h * h);
+  Collider<double> floor;
+  floor.shape = ColliderShape::box;
+  floor.center[0] = floor.center[2] = 0.5, floor.center[1] = 0.2;
+  floor.half[0] = floor.half[2] = 0.3, floor.half[1] = 0.1;  // top at y = 0.3
+  const int f = sim.add_collider(floor);
+  sim.advance_to(0.3);
+  ColliderBody& body = sim.collider(f);
+  body.reset_impulse();
+  sim.advance_to(0.5);
+  const double weight = 1000 * 0.2 * 0.1 * 0.2 * 9.81;
+  EXPECT_NEAR(body.impulse[1] / body.impulse_time, -weight, 0.02 * weight);
+  EXPECT_NEAR(body.impulse[0] / body.impulse_time, 0, 1e-3 * weight);
+  // Torque about the floor's centre (0.5, 0.2, 0.5) of a load centred above it: zero.
+  EXPECT_NEAR(body.angular_impulse[2] / body.impulse_time, 0, 1e-3 * weight);
+}
+
+TEST(ColliderReaction, ALoadedAxleAcceleratesUnderItsNetForce) {
+  ColliderBody axle;
+  axle.motion = ColliderBody::Motion::loaded_axle;
+  axle.mass = 2;
+  axle.load = 30;
+  const double f[3] = {0, 10, 0}, t[3] = {0, 0, 0};
+  axle.add_reaction(f, t, 0.01);
+  axle.advance(0.01);
+  EXPECT_NEAR(axle.collider.velocity[1], -0.1, 1e-15);  // (10 - 30) / 2 * 0.01
+  EXPECT_NEAR(axle.collider.center[1], -0.001, 1e-15);
+}
+
+}  // namespace
+}  // namespace firn
