@@ -237,14 +237,14 @@ class Sweep {
       std::filesystem::create_directories(dir);
       write_file_atomically(dir + "/" + metric + ".dat", plot->data);
       write_file_atomically(dir + "/" + metric + ".gp", plot->script);
-      const int status = wait_child(start_child({{"gnuplot", metric + ".gp"}, dir + "/" + metric + ".log", dir, true}));
+      const std::string log = dir + "/" + metric + ".log";
+      const int status = wait_child(start_child({{"gnuplot", metric + ".gp"}, log, dir, true}));
       if (status == 127) {
-        std::fprintf(stderr,
-                     "firn sweep: gnuplot not found (Debian package gnuplot-nox): no plots; the gnuplot "
-                     "scripts are in %s\n",
-                     dir.c_str());
+        std::fprintf(stderr, "firn sweep: gnuplot not found (Debian package gnuplot-nox): no plots\n");
         return;
       }
+      std::error_code ec;
+      if (status == 0 && std::filesystem::file_size(log, ec) == 0) std::filesystem::remove(log, ec);
       if (status != 0)
         std::fprintf(stderr, "firn sweep: gnuplot failed on %s/%s.gp (see %s.log)\n", dir.c_str(), metric.c_str(),
                      metric.c_str());

@@ -57,12 +57,12 @@ std::optional<MetricPlot> metric_plot(const std::string& metric, const std::vect
   s = "# " + metric + " against time for every run of the sweep: one panel per value of " + keys[0].key +
       ", one curve per\n# combination of the other varied keys. Data: " + metric +
       ".dat. Re-plot from this folder with: gnuplot " + metric + ".gp\n";
-  const std::string size = " noenhanced size " + std::to_string(520 * cols) + "," + std::to_string(400 * rows);
+  const std::string size = " noenhanced size " + std::to_string(520 * cols) + "," + std::to_string(440 * rows);
   s += "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n  set terminal pngcairo" + size +
        "\n} else {\n  set terminal png" + size + "\n}\n";
   s += "set output " + quoted(metric + ".png") + "\n";
   s += "set multiplot layout " + std::to_string(rows) + "," + std::to_string(cols) + " title " + quoted(metric) + "\n";
-  s += "set xlabel 'time (s)'\nset ylabel " + quoted(metric) + "\nset key top left\nset grid\n";
+  s += "set xlabel 'time (s)'\nset ylabel " + quoted(metric) + "\nset key below\nset grid\n";
   // Every panel on the same axes; the margins keep %.6g rounding from clipping a point.
   if (t_hi > t_lo)
     s += "set xrange [" + csv_number(t_lo - 0.001 * (t_hi - t_lo)) + ":" + csv_number(t_hi + 0.001 * (t_hi - t_lo)) +
