@@ -203,12 +203,13 @@ class Sweep {
     for (std::size_t k = 0; k < plan_.keys.size(); ++k)
       what += (k ? " " : "") + plan_.keys[k].key + "=" + record.values[k];
     const std::size_t total = plan_.combinations.size();
-    std::string line =
-        "firn sweep: [" + std::to_string(done) + "/" + std::to_string(total) + "] " + what + ": " + record.status;
+    std::string line = "firn sweep: [" + std::to_string(done) + "/" + std::to_string(total) + "] run " +
+                       std::to_string(r.index + 1) + ", " + what + ": " + record.status;
     if (record.status != "ok")
       line += " (exit status " + std::to_string(exit_status) + ", see " + run_dir(r.index) + "/log.txt)";
     line += ", " + duration_text(seconds_since(r.start));
-    if (done < total) line += "; ETA " + duration_text(seconds_since(start) / double(done) * double(total - done));
+    if (done < total && !stopping)
+      line += "; ETA " + duration_text(seconds_since(start) / double(done) * double(total - done));
     std::fprintf(stderr, "%s\n", line.c_str());
     if (stopping && record.status == "interrupted") return;  // stopped by the sweep's interrupt: no row
     finished_[r.index] = std::move(record);

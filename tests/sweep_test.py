@@ -118,8 +118,10 @@ def test_bad_input():
 
 
 def interrupt_when(out, jobs, end_times, ready):
-    """Starts a sweep over end times, sends SIGINT once every path in `ready` exists, returns stderr."""
+    """Starts a sweep over end times, sends SIGINT once every path in `ready` exists, returns stderr.
+    The spheres are at rest, so a long run can only end by reaching its end time."""
     p = subprocess.Popen([FIRN, "sweep", SCENE, "--preview", "--out", out, "--jobs", str(jobs),
+                          "--set", "bodies.0.velocity=[0,0,0]", "--set", "bodies.1.velocity=[0,0,0]",
                           "--vary", "simulation.end_time=" + end_times], stderr=subprocess.PIPE, text=True)
     deadline = time.time() + 120
     while not all(os.path.exists(os.path.join(out, path)) for path in ready) and time.time() < deadline:
@@ -133,16 +135,16 @@ def interrupt_when(out, jobs, end_times, ready):
 def test_interrupt():
     # One at a time: the first run finishes, the second is stopped, the third never starts.
     out = fresh("interrupt")
-    interrupt_when(out, 1, "0.1,1000,1000", ["sweep.csv", "runs/002_1000/particles/00001.vtp"])
+    interrupt_when(out, 1, "0.1,1e6,1e6", ["sweep.csv", "runs/002_1e6/particles/00001.vtp"])
     rows = table(out)[1:]
     check([row[:2] for row in rows] == [["0.1", "ok"]], f"sweep.csv after SIGINT: {rows}")
-    check(summary(os.path.join(out, "runs", "002_1000"))["status"] == "interrupted", "the child was not stopped")
-    check(not os.path.exists(os.path.join(out, "runs", "003_1000")), "a run was started after SIGINT")
+    check(summary(os.path.join(out, "runs", "002_1e6"))["status"] == "interrupted", "the child was not stopped")
+    check(not os.path.exists(os.path.join(out, "runs", "003_1e6")), "a run was started after SIGINT")
     # Two at a time, none finished: both stopped, sweep.csv has its header only.
     out = fresh("interrupt_none")
-    interrupt_when(out, 2, "1000,999", ["runs/001_1000/particles/00001.vtp", "runs/002_999/particles/00001.vtp"])
+    interrupt_when(out, 2, "1e6,2e6", ["runs/001_1e6/particles/00001.vtp", "runs/002_2e6/particles/00001.vtp"])
     check(table(out) == [["simulation.end_time"] + RUN_COLUMNS], f"sweep.csv: {table(out)}")
-    for run in ["001_1000", "002_999"]:
+    for run in ["001_1e6", "002_2e6"]:
         check(summary(os.path.join(out, "runs", run))["status"] == "interrupted", f"{run} was not stopped")
 
 
