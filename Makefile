@@ -4,7 +4,7 @@
 #               and the reference benchmark
 #   make test   deps + Release build + the whole test suite
 DEB_PACKAGES := build-essential cmake libeigen3-dev libcli11-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev libstb-dev zlib1g-dev \
-                python3 python3-vtk9
+                python3 python3-vtk9 gnuplot-nox
 JOBS ?= $(shell nproc)
 FIRN := build/release/firn
 

@@ -10,6 +10,7 @@ void add_bench_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
 void add_help_command(CLI::App& app);
 
 // Exit status of the command that ran (0: success, 1: a check or the run failed, 2: bad input,

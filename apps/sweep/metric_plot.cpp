@@ -1,0 +1,91 @@
+#include "apps/sweep/metric_plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "apps/sweep/csv.hpp"
+
+namespace firn::sweep {
+namespace {
+
+// A gnuplot single-quoted string: only the quote itself needs escaping, by doubling it.
+std::string quoted(const std::string& text) {
+  std::string s = "'";
+  for (const char c : text) s += c == '\'' ? std::string("''") : std::string(1, c);
+  return s + "'";
+}
+
+struct Curve {
+  std::string title;
+  std::vector<std::pair<double, double>> points;  // (time, value)
+};
+
+}  // namespace
+
+std::optional<MetricPlot> metric_plot(const std::string& metric, const std::vector<VariedKey>& keys,
+                                      const std::vector<RunRecord>& runs) {
+  if (keys.empty()) return std::nullopt;
+  // The curves of each panel, panels in the order of the first key's values.
+  std::vector<std::vector<Curve>> panels(keys[0].values.size());
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo, t_lo = lo, t_hi = -lo;
+  for (const RunRecord& run : runs) {
+    if (!run.metrics || run.values.size() != keys.size()) continue;
+    const int c = run.metrics->column_index(metric), t = run.metrics->column_index("time");
+    const auto panel = std::find(keys[0].values.begin(), keys[0].values.end(), run.values[0]);
+    if (c < 0 || panel == keys[0].values.end()) continue;
+    Curve curve;
+    for (std::size_t k = 1; k < keys.size(); ++k)
+      curve.title += (k > 1 ? ", " : "") + keys[k].key + " = " + run.values[k];
+    for (const auto& row : run.metrics->rows) {
+      if (std::isnan(row[c]) || std::isnan(row[t])) continue;
+      curve.points.emplace_back(row[t], row[c]);
+      lo = std::min(lo, row[c]), hi = std::max(hi, row[c]);
+      t_lo = std::min(t_lo, row[t]), t_hi = std::max(t_hi, row[t]);
+    }
+    if (!curve.points.empty()) panels[panel - keys[0].values.begin()].push_back(std::move(curve));
+  }
+  std::size_t used = 0;
+  for (const auto& p : panels) used += !p.empty();
+  if (used == 0) return std::nullopt;
+
+  const std::size_t cols = std::min<std::size_t>(used, 3), rows = (used + cols - 1) / cols;
+  MetricPlot plot;
+  plot.data = "# " + metric + " against time (s) for every run of the sweep; one block per curve of " + metric +
+              ".gp, in the order plotted\n";
+  std::string& s = plot.script;
+  s = "# " + metric + " against time for every run of the sweep: one panel per value of " + keys[0].key +
+      ", one curve per\n# combination of the other varied keys. Data: " + metric +
+      ".dat. Re-plot from this folder with: gnuplot " + metric + ".gp\n";
+  const std::string size = " noenhanced size " + std::to_string(520 * cols) + "," + std::to_string(440 * rows);
+  s += "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n  set terminal pngcairo" + size +
+       "\n} else {\n  set terminal png" + size + "\n}\n";
+  s += "set output " + quoted(metric + ".png") + "\n";
+  s += "set multiplot layout " + std::to_string(rows) + "," + std::to_string(cols) + " title " + quoted(metric) + "\n";
+  s += "set xlabel 'time (s)'\nset ylabel " + quoted(metric) + "\nset key below\nset grid\n";
+  // Every panel on the same axes; the margins keep %.6g rounding from clipping a point.
+  if (t_hi > t_lo)
+    s += "set xrange [" + csv_number(t_lo - 0.001 * (t_hi - t_lo)) + ":" + csv_number(t_hi + 0.001 * (t_hi - t_lo)) +
+         "]\n";
+  if (hi > lo)
+    s += "set yrange [" + csv_number(lo - 0.05 * (hi - lo)) + ":" + csv_number(hi + 0.05 * (hi - lo)) + "]\n";
+  int block = 0;
+  for (std::size_t p = 0; p < panels.size(); ++p) {
+    if (panels[p].empty()) continue;
+    s += "set title " + quoted(keys[0].key + " = " + keys[0].values[p]) + "\nplot ";
+    for (std::size_t i = 0; i < panels[p].size(); ++i) {
+      const Curve& curve = panels[p][i];
+      if (block > 0) plot.data += "\n\n";  // gnuplot's data-set separator: two blank lines
+      s += (i ? ", \\\n     " : "") + quoted(metric + ".dat") + " index " + std::to_string(block++) +
+           " using 1:2 with lines linewidth 2 " + (curve.title.empty() ? "notitle" : "title " + quoted(curve.title));
+      plot.data +=
+          "# " + keys[0].key + " = " + keys[0].values[p] + (curve.title.empty() ? "" : ", ") + curve.title + "\n";
+      for (const auto& [time, value] : curve.points) plot.data += csv_number(time) + " " + csv_number(value) + "\n";
+    }
+    s += "\n";
+  }
+  s += "unset multiplot\n";
+  return plot;
+}
+
+}  // namespace firn::sweep

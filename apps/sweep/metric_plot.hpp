@@ -1,0 +1,28 @@
+// gnuplot files drawing one scene metric against time for every run of a sweep, grouped like the
+// thesis' Figures 5.5 and 5.6: one panel per value of the first varied key, one curve per
+// combination of the other keys, labelled with their values.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "apps/sweep/run_record.hpp"
+#include "apps/sweep/value_list.hpp"
+
+namespace firn::sweep {
+
+// The scene-metric columns a sweep plots, when the runs have them.
+inline const std::vector<std::string> plotted_metrics = {"displaced", "accumulated", "traction"};
+
+struct MetricPlot {
+  std::string data;    // METRIC.dat: "time value" lines, one block per curve in the order plotted
+  std::string script;  // METRIC.gp: reads METRIC.dat and writes METRIC.png in the folder it runs in
+};
+
+// None when no run has a value of the metric. The script picks gnuplot's pngcairo terminal, or
+// png where pngcairo is absent.
+std::optional<MetricPlot> metric_plot(const std::string& metric, const std::vector<VariedKey>& keys,
+                                      const std::vector<RunRecord>& runs);
+
+}  // namespace firn::sweep

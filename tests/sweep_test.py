@@ -1,0 +1,153 @@
+"""End-to-end checks of `firn sweep` (issue 5, item 7; DESIGN.md section 5).
+
+Usage: python3 sweep_test.py FIRN REPO_ROOT SCRATCH_DIR TEST
+Sweeps the tiny two_spheres scene at preview resolution: a 2x2 product run two at a time gives one
+sweep.csv row per combination in product order with the runs' statuses and counts, and each child
+run really got its values; an unstable combination is reported in its row and makes the exit
+status 1; a bad value or list is refused with exit status 2 before anything is written; SIGINT
+stops the sweep with exit status 130, the running child interrupted and sweep.csv holding the runs
+that finished.
+"""
+import csv
+import glob
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+FIRN, ROOT, SCRATCH, TEST = sys.argv[1:5]
+SCENE = os.path.join(ROOT, "scenes", "two_spheres.toml")
+RUN_COLUMNS = ["status", "steps", "particles", "wall_seconds", "particle_steps_per_second"]
+
+
+def check(cond, message):
+    if not cond:
+        sys.exit("FAIL: " + message)
+
+
+def fresh(name):
+    path = os.path.join(SCRATCH, name)
+    shutil.rmtree(path, ignore_errors=True)
+    return path
+
+
+def sweep(out, *args):
+    return subprocess.run([FIRN, "sweep", SCENE, "--preview", "--out", out, "--set", "simulation.end_time=0.1"] +
+                          list(args), capture_output=True, text=True, timeout=300)
+
+
+def table(out):
+    with open(os.path.join(out, "sweep.csv"), newline="") as f:
+        return list(csv.reader(f))
+
+
+def summary(run_dir):
+    with open(os.path.join(run_dir, "summary.json")) as f:
+        return json.load(f)
+
+
+def test_product():
+    out = fresh("product")
+    r = sweep(out, "--vary", "bodies.0.velocity=[0.1,0.1,0],[0.2, 0.2, 0]", "--vary", "simulation.transfer=pic,apic",
+              "--jobs", "2", "--at", "0.05,100 ms")
+    check(r.returncode == 0, f"exit status {r.returncode}: {r.stderr}")
+    rows = table(out)
+    header, rows = rows[0], rows[1:]
+    keys = ["bodies.0.velocity", "simulation.transfer"]
+    check(header[:7] == keys + RUN_COLUMNS, f"sweep.csv header {header}")
+    # Whatever scene metrics two_spheres reports come as mean_C then C@T per --at time.
+    extra = header[7:]
+    check(len(extra) % 4 == 0 and all(extra[i].startswith("mean_") for i in range(0, len(extra), 4)),
+          f"scene-metric columns {extra}")
+    expected = [["[0.1,0.1,0]", "pic"], ["[0.1,0.1,0]", "apic"], ["[0.2, 0.2, 0]", "pic"], ["[0.2, 0.2, 0]", "apic"]]
+    check([row[:2] for row in rows] == expected, f"rows not in product order: {rows}")
+    check(all(len(row) == len(header) for row in rows), "rows and header differ in length")
+    cores = len(os.sched_getaffinity(0))
+    run_dirs = sorted(glob.glob(os.path.join(out, "runs", "*")))
+    names = [os.path.basename(d) for d in run_dirs]
+    check(names == ["001_0.1-0.1-0_pic", "002_0.1-0.1-0_apic", "003_0.2-0.2-0_pic", "004_0.2-0.2-0_apic"],
+          f"run folders {names}")
+    for row, run_dir in zip(rows, run_dirs):
+        s = summary(run_dir)
+        check(row[2] == "ok" and s["status"] == "ok", f"{run_dir}: {row}")
+        check(int(row[3]) == s["steps"] > 0 and int(row[4]) == s["particles"] > 0, f"{run_dir}: {row} vs {s}")
+        check(s["threads"] == max(1, cores // 2), f"{run_dir} ran on {s['threads']} threads with {cores} cores")
+        check(os.path.isfile(os.path.join(run_dir, "log.txt")), f"{run_dir}/log.txt missing")
+        with open(os.path.join(run_dir, "scene.resolved.toml")) as f:
+            resolved = f.read()
+        check(re.search(rf"^transfer = [\"']{row[1]}[\"']$", resolved, re.M),
+              f"{run_dir} did not run with transfer {row[1]}")
+        with open(os.path.join(run_dir, "metrics.csv")) as f:
+            first = next(csv.DictReader(f))
+        check(abs(float(first["max_speed"]) - 2 ** 0.5 * float(row[0][1:4])) < 1e-6,
+              f"{run_dir} did not start at {row[0]}: max_speed {first['max_speed']}")
+    check(not glob.glob(os.path.join(out, "**", "*.tmp"), recursive=True), "temporary files left behind")
+    progress = [line for line in r.stderr.splitlines() if "/4]" in line]
+    check(len(progress) == 4, f"expected one progress line per run: {r.stderr}")
+
+
+def test_statuses():
+    out = fresh("statuses")
+    # A fixed time step far above the CFL limit of the fast sphere: the stability guard stops it.
+    r = sweep(out, "--set", "simulation.fixed_dt=0.05", "--vary", "bodies.0.velocity=[0.1,0.1,0],[5,5,0]")
+    check(r.returncode == 1, f"exit status {r.returncode} with an unstable run: {r.stderr}")
+    rows = table(out)[1:]
+    check([row[:2] for row in rows] == [["[0.1,0.1,0]", "ok"], ["[5,5,0]", "unstable"]], f"rows {rows}")
+    check("unstable" in r.stderr and "log.txt" in r.stderr, f"stderr does not point at the log: {r.stderr}")
+
+
+def test_bad_input():
+    for name, args in [
+        ("bad_value", ["--vary", "simulation.transfer=pic,nonsense"]),
+        ("bad_key", ["--vary", "simulation.trasnfer=pic,apic"]),
+        ("empty_value", ["--vary", "simulation.transfer=pic,,apic"]),
+        ("unbalanced", ["--vary", "bodies.0.velocity=[0,0,1],[0,0,2"]),
+        ("twice", ["--vary", "simulation.transfer=pic", "--vary", "simulation.transfer=apic"]),
+        ("bad_at", ["--vary", "simulation.transfer=pic", "--at", "5 kg"]),
+        ("bad_set", ["--vary", "simulation.transfer=pic,apic", "--set", "simulation.dx=-1"]),
+    ]:
+        out = fresh(name)
+        r = sweep(out, *args)
+        check(r.returncode == 2, f"{name}: exit status {r.returncode}: {r.stderr}")
+        check(r.stderr.count("\n") == 1, f"{name}: not one line on stderr: {r.stderr!r}")
+        check(not os.path.exists(out), f"{name}: {out} was written")
+
+
+def interrupt_when(out, jobs, end_times, ready):
+    """Starts a sweep over end times, sends SIGINT once every path in `ready` exists, returns stderr.
+    The spheres are at rest, so a long run can only end by reaching its end time."""
+    p = subprocess.Popen([FIRN, "sweep", SCENE, "--preview", "--out", out, "--jobs", str(jobs),
+                          "--set", "bodies.0.velocity=[0,0,0]", "--set", "bodies.1.velocity=[0,0,0]",
+                          "--vary", "simulation.end_time=" + end_times], stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 120
+    while not all(os.path.exists(os.path.join(out, path)) for path in ready) and time.time() < deadline:
+        time.sleep(0.05)
+    p.send_signal(signal.SIGINT)
+    err = p.communicate(timeout=120)[1]
+    check(p.returncode == 130, f"exit status {p.returncode} after SIGINT: {err}")
+    return err
+
+
+def test_interrupt():
+    # One at a time: the first run finishes, the second is stopped, the third never starts.
+    out = fresh("interrupt")
+    interrupt_when(out, 1, "0.1,1e6,1e6", ["sweep.csv", "runs/002_1e6/particles/00001.vtp"])
+    rows = table(out)[1:]
+    check([row[:2] for row in rows] == [["0.1", "ok"]], f"sweep.csv after SIGINT: {rows}")
+    check(summary(os.path.join(out, "runs", "002_1e6"))["status"] == "interrupted", "the child was not stopped")
+    check(not os.path.exists(os.path.join(out, "runs", "003_1e6")), "a run was started after SIGINT")
+    # Two at a time, none finished: both stopped, sweep.csv has its header only.
+    out = fresh("interrupt_none")
+    interrupt_when(out, 2, "1e6,2e6", ["runs/001_1e6/particles/00001.vtp", "runs/002_2e6/particles/00001.vtp"])
+    check(table(out) == [["simulation.end_time"] + RUN_COLUMNS], f"sweep.csv: {table(out)}")
+    for run in ["001_1e6", "002_2e6"]:
+        check(summary(os.path.join(out, "runs", run))["status"] == "interrupted", f"{run} was not stopped")
+
+
+os.makedirs(SCRATCH, exist_ok=True)
+globals()["test_" + TEST]()
+print("ok")
