@@ -9,7 +9,8 @@ struct RunSummary {
   std::string status = "ok";  // ok, unstable, interrupted or failed
   std::string error;          // the message, when not ok
   long steps = 0;
-  std::size_t particles = 0;
+  std::size_t particles = 0;      // at the start
+  double particle_steps = 0;       // sum over steps of the particles stepped (a conveyor changes the count)
   double simulated_time = 0;
   double wall_seconds = 0;
   double step_seconds = 0;  // inside the step loop
@@ -18,7 +19,7 @@ struct RunSummary {
   std::string precision = "float";
   double peak_memory_mb = 0;
   std::string state_hash;  // of the final particle state (Simulation::state_hash), hex
-  double particle_steps_per_second() const { return step_seconds > 0 ? double(particles) * double(steps) / step_seconds : 0; }
+  double particle_steps_per_second() const { return step_seconds > 0 ? particle_steps / step_seconds : 0; }
   std::string to_json() const;
 };
 

@@ -88,6 +88,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
         if (conveyor) conveyor->update(sim, sim.time());
         sim.step(std::min(sim.next_dt(), target - sim.time()));
         step_seconds += seconds_since(t0);
+        summary.particle_steps += double(sim.particle_count());
         if (options.progress) options.progress({sim.time(), scene.end_time, sim.steps(), f, frames, step_seconds});
       }
       write_frame(f);
