@@ -231,8 +231,13 @@ class Simulation {
     }
     staged_material_.clear();
     storage_.gather(order.data(), order.size(), backend_);
-    max_speed_ = T(diagnostics().max_speed);
     const ParticleView<T> pv = storage_.view();
+    max_speed_ = backend_.parallel_reduce(
+        "particles.max_speed", pv.n, T(0),
+        [=](std::size_t p, T& acc) {
+          acc = std::max(acc, std::sqrt(pv.v[0][p] * pv.v[0][p] + pv.v[1][p] * pv.v[1][p] + pv.v[2][p] * pv.v[2][p]));
+        },
+        [](T& a, T b) { a = std::max(a, b); });
     double lightest = std::numeric_limits<double>::max();
     for (std::size_t p = 0; p < pv.n; ++p) lightest = std::min(lightest, double(pv.mass[p]));
     min_node_mass_ = T(kEmptyNodeMassFraction * lightest);

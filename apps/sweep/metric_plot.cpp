@@ -73,11 +73,14 @@ std::optional<MetricPlot> metric_plot(const std::string& metric, const std::vect
   for (std::size_t p = 0; p < panels.size(); ++p) {
     if (panels[p].empty()) continue;
     s += "set title " + quoted(keys[0].key + " = " + keys[0].values[p]) + "\nplot ";
+    // gnuplot's default colours repeat after eight; later curves change the dash pattern instead.
+    constexpr std::size_t kColours = 8;
     for (std::size_t i = 0; i < panels[p].size(); ++i) {
       const Curve& curve = panels[p][i];
       if (block > 0) plot.data += "\n\n";  // gnuplot's data-set separator: two blank lines
       s += (i ? ", \\\n     " : "") + quoted(metric + ".dat") + " index " + std::to_string(block++) +
-           " using 1:2 with lines linewidth 2 " + (curve.title.empty() ? "notitle" : "title " + quoted(curve.title));
+           " using 1:2 with lines linewidth 2 linecolor " + std::to_string(i % kColours + 1) + " dashtype " +
+           std::to_string(i / kColours + 1) + " " + (curve.title.empty() ? "notitle" : "title " + quoted(curve.title));
       plot.data +=
           "# " + keys[0].key + " = " + keys[0].values[p] + (curve.title.empty() ? "" : ", ") + curve.title + "\n";
       for (const auto& [time, value] : curve.points) plot.data += csv_number(time) + " " + csv_number(value) + "\n";
