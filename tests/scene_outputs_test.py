@@ -11,13 +11,11 @@ import csv
 import glob
 import json
 import os
-import shutil
 import signal
 import subprocess
-import sys
 import time
 
-FIRN, ROOT, SCRATCH, TEST = sys.argv[1:5]
+from end_to_end import FIRN, ROOT, SCRATCH, TEST, check, fresh
 SCENE = os.path.join(ROOT, "scenes", "snowball_pair.toml")
 
 
@@ -25,15 +23,6 @@ def run(args, **kw):
     return subprocess.run([FIRN] + args, capture_output=True, text=True, **kw)
 
 
-def fresh(name):
-    path = os.path.join(SCRATCH, name)
-    shutil.rmtree(path, ignore_errors=True)
-    return path
-
-
-def check(cond, message):
-    if not cond:
-        sys.exit("FAIL: " + message)
 
 
 def preview_run(name, *sets):

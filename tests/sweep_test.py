@@ -13,26 +13,15 @@ import glob
 import json
 import os
 import re
-import shutil
 import signal
 import subprocess
-import sys
 import time
 
-FIRN, ROOT, SCRATCH, TEST = sys.argv[1:5]
+from end_to_end import FIRN, ROOT, SCRATCH, TEST, check, fresh
 SCENE = os.path.join(ROOT, "scenes", "two_spheres.toml")
 RUN_COLUMNS = ["status", "steps", "particles", "wall_seconds", "particle_steps_per_second"]
 
 
-def check(cond, message):
-    if not cond:
-        sys.exit("FAIL: " + message)
-
-
-def fresh(name):
-    path = os.path.join(SCRATCH, name)
-    shutil.rmtree(path, ignore_errors=True)
-    return path
 
 
 def sweep(out, *args):

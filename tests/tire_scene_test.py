@@ -9,23 +9,13 @@ import math
 import os
 import shutil
 import subprocess
-import sys
 
-FIRN, ROOT, SCRATCH, TEST = sys.argv[1:5]
+from end_to_end import FIRN, ROOT, SCRATCH, TEST, check, fresh
 SCENE = os.path.join(ROOT, "scenes", "tire_on_snow.toml")
 TIRE_COLUMNS = ["traction", "vertical_load", "axle_torque", "slip_ratio", "axle_height", "peak_pressure",
                 "displaced", "accumulated", "injected", "removed", "tire_fx", "ground_fy"]
 
 
-def check(cond, message):
-    if not cond:
-        sys.exit("FAIL: " + message)
-
-
-def fresh(name):
-    path = os.path.join(SCRATCH, name)
-    shutil.rmtree(path, ignore_errors=True)
-    return path
 
 
 def preview_run(name, *sets):
