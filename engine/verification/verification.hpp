@@ -44,6 +44,10 @@ std::vector<VerificationRow> verify_manufactured_solution(const VerificationOpti
 // transfer scheme; the energy history goes to the log.
 std::vector<VerificationRow> verify_two_spheres(const VerificationOptions& options);
 
+// Block sliding down a 30-degree incline with Coulomb friction (incline_sliding.cpp): relative
+// error of the centre of mass's acceleration against g (sin theta - mu cos theta).
+std::vector<VerificationRow> verify_incline_sliding(const VerificationOptions& options);
+
 // Material-point driver (engine/material_driver.hpp) for one constitutive model ("hyperelastic_plastic",
 // "snow_stomakhin", "mooney_rivlin"): closed forms, yield surface and J_P bookkeeping after every
 // return, sub-stepped references, objectivity. One row per check.
