@@ -1,6 +1,10 @@
 // The known-answer problems of `firn verify` (DESIGN.md section 6): every error within its bound.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
+#include "engine/verification/least_squares.hpp"
 #include "engine/verification/verification.hpp"
 
 namespace firn {
@@ -18,6 +22,35 @@ TEST_P(Verification, ErrorsWithinBounds) {
 INSTANTIATE_TEST_SUITE_P(Problems, Verification, ::testing::ValuesIn(verification_problems()));
 
 TEST(Verification, RejectsUnknownProblem) { EXPECT_THROW(run_verification("nope", {}), std::invalid_argument); }
+
+// The slow problems stay out of the default run (and so out of this suite).
+TEST(Verification, OnRequestProblemsAreNotDefault) {
+  const std::vector<std::string> defaults = verification_problems();
+  ASSERT_FALSE(verification_problems_on_request().empty());
+  for (const std::string& name : verification_problems_on_request())
+    EXPECT_EQ(std::find(defaults.begin(), defaults.end(), name), defaults.end()) << name;
+}
+
+TEST(LeastSquaresSlope, RecoversALineInsideTheWindowOnly) {
+  std::vector<double> t, y;
+  for (int i = 0; i <= 20; ++i) {
+    t.push_back(0.1 * i);
+    y.push_back(i <= 10 ? 3 - 2 * t.back() : 100 * t.back() * t.back());  // a line, then anything
+  }
+  EXPECT_NEAR(least_squares_slope(t, y, 0, 1.0), -2, 1e-12);
+  EXPECT_GT(least_squares_slope(t, y, 0, 2.0), 0);  // the window matters
+}
+
+TEST(LeastSquaresSlope, FitsNoisyDataInTheLeastSquaresSense) {
+  // Pairs of points 0.5 above and below the line y = t: the best fit is that line.
+  const std::vector<double> t = {0, 0, 1, 1, 2, 2}, y = {0.5, -0.5, 1.5, 0.5, 2.5, 1.5};
+  EXPECT_NEAR(least_squares_slope(t, y, 0, 2), 1, 1e-12);
+}
+
+TEST(LeastSquaresSlope, NaNWithoutTwoDistinctTimes) {
+  EXPECT_TRUE(std::isnan(least_squares_slope({1, 2}, {1, 2}, 1.5, 3)));
+  EXPECT_TRUE(std::isnan(least_squares_slope({1, 1}, {1, 2}, 0, 3)));
+}
 
 }  // namespace
 }  // namespace firn

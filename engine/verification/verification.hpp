@@ -29,6 +29,9 @@ struct VerificationOptions {
 // Names of the problems, in the order `firn verify` runs them.
 std::vector<std::string> verification_problems();
 
+// Problems too slow for the default run and the test suite, run only when named.
+std::vector<std::string> verification_problems_on_request();
+
 // Runs one problem; throws std::invalid_argument for an unknown name.
 std::vector<VerificationRow> run_verification(const std::string& problem, const VerificationOptions& options);
 
@@ -43,6 +46,16 @@ std::vector<VerificationRow> verify_manufactured_solution(const VerificationOpti
 // Two elastic spheres colliding (Sulsky et al. 1994, in 3D): relative drift of total momentum per
 // transfer scheme; the energy history goes to the log.
 std::vector<VerificationRow> verify_two_spheres(const VerificationOptions& options);
+
+// Block sliding down a 30-degree incline with Coulomb friction (incline_sliding.cpp): relative
+// error of the centre of mass's acceleration against g (sin theta - mu cos theta).
+std::vector<VerificationRow> verify_incline_sliding(const VerificationOptions& options);
+
+// Solid cylinder on a 45-degree incline (incline_rolling.cpp) at R / dx = 10: the rolling
+// acceleration against 2/3 g sin theta, and the slip ratio at mu = 1.25 and 0.75 times tan(theta) / 3
+// (rolls, slides). The _fine variant runs R / dx = 20 and 40 (on request only).
+std::vector<VerificationRow> verify_incline_rolling(const VerificationOptions& options);
+std::vector<VerificationRow> verify_incline_rolling_fine(const VerificationOptions& options);
 
 // Material-point driver (engine/material_driver.hpp) for one constitutive model ("hyperelastic_plastic",
 // "snow_stomakhin", "mooney_rivlin"): closed forms, yield surface and J_P bookkeeping after every

@@ -1,0 +1,51 @@
+// A body released on the incline of DESIGN.md section 6, problem 4, shared by incline_sliding.cpp
+// and incline_rolling.cpp. The slope is modelled by tilting gravity rather than the ground:
+// g = g0 (sin theta, -cos theta, 0) over a horizontal plane collider (the solid y <= 0, boundary
+// `separate`, Coulomb friction mu), which is the same problem seen in the slope's frame. The ground
+// is then grid-aligned: every node at y <= 0 is inside it, with the exact normal (0, 1, 0), and the
+// body's lattice of particles is flush with it, so the only discretisation in the contact is MPM's
+// own. A tilted plane would put the contact on a staircase of nodes at varying depths and the body
+// on a lattice at an angle to the grid: a test of the collider's pose, not of the friction law.
+// Plane strain: the body is a slab one cell thick in z, and slip walls on every z node keep
+// v_z = 0. Gravity is eased in, g(t) = g0 (1 - cos(pi t / ramp)) / 2 for t < ramp, as a body
+// acceleration, so that the contact is loaded without a jolt (a sudden load sets the body bouncing
+// on its contact; APIC hardly damps it).
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "engine/materials.hpp"
+#include "engine/particle_fill.hpp"
+#include "engine/verification/verification.hpp"
+
+namespace firn {
+
+struct InclineRun {
+  double angle = 0;      // theta (rad)
+  double mu = 0;         // Coulomb coefficient of the ground
+  double dx = 0;
+  int per_cell = 2;      // particles per cell per axis
+  MaterialInfo material;
+  Point body_max = {0, 0, 0};  // the body lies in [0, body_max] in x and y, its lowest point on y = 0
+  std::function<bool(const Point&)> inside;
+  double travel = 0;     // room down the slope beyond body_max[0] (m)
+  double ramp = 0;       // gravity eased in over this time (s)
+  double end_time = 0;
+};
+
+// Motion of the body's centre of mass, one sample per step.
+struct InclineHistory {
+  std::vector<double> time;
+  std::vector<double> velocity;  // down the slope (m/s)
+  std::vector<double> spin;      // angular velocity about -z, positive when rolling down (rad/s)
+  long steps = 0;
+  double seconds = 0;  // wall time of the steps
+};
+
+InclineHistory run_incline(const InclineRun& run, const VerificationOptions& options);
+
+// g0 = 9.81 m/s^2.
+constexpr double kInclineGravity = 9.81;
+
+}  // namespace firn
