@@ -22,6 +22,23 @@ inline double particle_volume(const SceneSpec& scene) {
   return h * h * h;
 }
 
+// The engine's collider for a scene's [[colliders]] entry.
+template <class T>
+Collider<T> make_collider(const ColliderSpec& c) {
+  Collider<T> k;
+  k.shape = c.kind == ColliderSpec::Kind::plane ? ColliderShape::plane : ColliderShape::box;
+  k.boundary = c.boundary;
+  k.friction = T(c.friction);
+  for (int d = 0; d < 3; ++d) {
+    k.point[d] = T(c.point[d]);
+    k.normal[d] = T(c.normal[d]);
+    k.min[d] = T(c.min[d]);
+    k.max[d] = T(c.max[d]);
+    k.velocity[d] = T(c.velocity[d]);
+  }
+  return k;
+}
+
 template <class T, class Backend>
 void build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
   for (const MaterialInfo& m : scene.materials) sim.add_material(m);
@@ -30,20 +47,7 @@ void build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
     fill_body(scene, b, positions, velocities);
     sim.add_particles(scene.bodies[b].material, positions, velocities, particle_volume(scene));
   }
-  for (const ColliderSpec& c : scene.colliders) {
-    Collider<T> k;
-    k.shape = c.kind == ColliderSpec::Kind::plane ? ColliderShape::plane : ColliderShape::box;
-    k.boundary = c.boundary;
-    k.friction = T(c.friction);
-    for (int d = 0; d < 3; ++d) {
-      k.point[d] = T(c.point[d]);
-      k.normal[d] = T(c.normal[d]);
-      k.min[d] = T(c.min[d]);
-      k.max[d] = T(c.max[d]);
-      k.velocity[d] = T(c.velocity[d]);
-    }
-    sim.add_collider(k);
-  }
+  for (const ColliderSpec& c : scene.colliders) sim.add_collider(make_collider<T>(c));
   for (const LoadSpec& l : scene.loads) sim.add_load(l.region_min, l.region_max, l.force, l.ramp_time);
 }
 

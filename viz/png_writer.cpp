@@ -1,0 +1,51 @@
+#include "viz/png_writer.hpp"
+
+#include <zlib.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "engine/output/atomic_file.hpp"
+
+namespace {
+
+// stb's hook: deflate `data` into a malloc'ed zlib stream that stb frees with free().
+unsigned char* zlib_level1_compress(unsigned char* data, int length, int* out_length, int /*quality*/) {
+  uLongf size = compressBound(uLong(length));
+  auto* out = static_cast<unsigned char*>(std::malloc(size));
+  if (!out || compress2(out, &size, data, uLong(length), 1) != Z_OK) {
+    std::free(out);
+    return nullptr;
+  }
+  *out_length = int(size);
+  return out;
+}
+
+}  // namespace
+
+#define STBIW_ZLIB_COMPRESS zlib_level1_compress
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb/stb_image_write.h>
+
+namespace firn::viz {
+
+std::vector<unsigned char> encode_png(const Image& image) {
+  std::vector<unsigned char> out;
+  auto append = [](void* context, void* data, int size) {
+    auto* v = static_cast<std::vector<unsigned char>*>(context);
+    v->insert(v->end(), static_cast<unsigned char*>(data), static_cast<unsigned char*>(data) + size);
+  };
+  if (!stbi_write_png_to_func(append, &out, image.width, image.height, 3, image.rgb.data(), image.width * 3))
+    throw std::runtime_error("PNG encoding failed");
+  return out;
+}
+
+void write_png(const std::string& path, const Image& image) {
+  const std::vector<unsigned char> png = encode_png(image);
+  AtomicFile f(path);
+  f.stream().write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
+  f.commit();
+}
+
+}  // namespace firn::viz
