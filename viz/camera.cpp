@@ -5,7 +5,7 @@
 
 namespace firn::viz {
 
-Camera frame_camera(const RenderSettings& s, const Bounds& bounds) {
+Camera frame_camera(const RenderSettings& s, const Bounds& bounds, const std::function<bool(const Vec3&)>& solid) {
   Camera c;
   const Bounds b = bounds.empty() ? Bounds{s.domain_min, s.domain_max} : bounds;
   const Vec3 centre = 0.5 * (b.lo + b.hi);
@@ -18,9 +18,25 @@ Camera frame_camera(const RenderSettings& s, const Bounds& bounds) {
     c.eye = *s.camera_position;
   } else {
     const double distance = 1.15 * box_radius / std::sin(narrow / 2);
-    c.eye = c.target + distance * normalize(Vec3{0.35, 0.42, 1.0});
+    auto clear = [&](const Vec3& eye) {
+      for (int i = 1; solid && i <= 32; ++i)
+        if (solid(c.target + (i / 32.0) * (eye - c.target))) return false;
+      return true;
+    };
+    const Vec3 directions[] = {{0.35, 0.42, 1}, {-0.35, 0.42, 1}, {0.35, 0.42, -1}, {-0.35, 0.42, -1},
+                               {1, 0.42, 0.35}, {-1, 0.42, 0.35}, {1, 0.42, -0.35}, {-1, 0.42, -0.35}};
+    c.eye = c.target + distance * normalize(directions[0]);
+    for (const Vec3& d : directions)
+      if (clear(c.target + distance * normalize(d))) {
+        c.eye = c.target + distance * normalize(d);
+        break;
+      }
   }
   if (std::abs(dot(normalize(c.target - c.eye), c.up)) > 0.999) c.up = {0, 0, -1};
+  // By default the light comes from above, over the camera's shoulder (on its side of the target
+  // along x and z), so what the camera sees is lit.
+  const Vec3 side = c.eye - c.target;
+  c.light_direction = s.light_direction.value_or(Vec3{side[0] >= 0 ? -0.45 : 0.45, -1.0, side[2] >= 0 ? -0.55 : 0.55});
   c.radius = box_radius;
   const double distance = length(c.eye - c.target);
   c.near = std::max(0.02 * distance, distance - 3 * box_radius);
@@ -28,8 +44,8 @@ Camera frame_camera(const RenderSettings& s, const Bounds& bounds) {
   return c;
 }
 
-LightCamera light_camera(const RenderSettings& s, const Camera& c) {
-  const Vec3 towards_light = -1.0 * normalize(s.light_direction);
+LightCamera light_camera(const Camera& c) {
+  const Vec3 towards_light = -1.0 * normalize(c.light_direction);
   const double r = 1.5 * c.radius;
   Vec3 up = {0, 1, 0};
   if (std::abs(dot(towards_light, up)) > 0.99) up = {0, 0, 1};

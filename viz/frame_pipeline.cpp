@@ -46,7 +46,15 @@ FramePipeline::~FramePipeline() = default;
 
 void FramePipeline::add(const RenderFrame& frame) {
   const RenderSettings& s = settings_;
-  if (!camera_) camera_ = frame_camera(s, position_bounds(frame.positions));
+  if (!camera_) {
+    auto solid = [&](const Vec3& x) {
+      Vec3 n;
+      for (const SignedDistance& sdf : frame.colliders)
+        if (sdf(x, n) < 0) return true;
+      return false;
+    };
+    camera_ = frame_camera(s, position_bounds(frame.positions), solid);
+  }
 
   FrameScene scene;
   scene.positions = frame.positions;
@@ -77,8 +85,11 @@ void FramePipeline::add(const RenderFrame& frame) {
     legend.names = s.material_names;
     legend.colors = s.material_colors;
   }
+  // Colliders as solids cut to the domain, meshed over a slightly larger box so the cut faces close.
+  const Vec3 margin = (2.0 / kColliderMeshCells) * (s.domain_max - s.domain_min);
   for (const SignedDistance& sdf : frame.colliders)
-    scene.colliders.push_back(mesh_signed_distance(sdf, s.domain_min, s.domain_max, kColliderMeshCells));
+    scene.colliders.push_back(mesh_signed_distance(clip_to_box(sdf, s.domain_min, s.domain_max), s.domain_min - margin,
+                                                   s.domain_max + margin, kColliderMeshCells));
 
   Image image = renderer_->render(scene, *camera_);
   if (s.legend) {

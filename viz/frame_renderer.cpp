@@ -184,7 +184,7 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
   };
 
   // 1. Shadow map: spheres (as discs) and colliders seen from the light.
-  const LightCamera light = light_camera(s, camera);
+  const LightCamera light = light_camera(camera);
   const int shadow_size = r_->shadow_size;
   if (s.shadows) {
     gl.glBindFramebuffer(GL_FRAMEBUFFER, r_->framebuffers[0]);
@@ -257,7 +257,7 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
   Mat4 to_unit = Mat4::identity();  // clip [-1, 1] -> texture [0, 1]
   for (int i = 0; i < 3; ++i) to_unit.at(i, i) = 0.5f, to_unit.at(i, 3) = 0.5f;
   const Mat4 view_to_shadow = to_unit * light.projection * light.view * inverse_rigid(view);
-  const auto light_dir_view = to_float(normalize(rotate(view, -1.0 * s.light_direction)));
+  const auto light_dir_view = to_float(normalize(rotate(view, -1.0 * camera.light_direction)));
   const auto up_view = to_float(rotate(view, {0, 1, 0}));
   const float shadow_texel = float(2 * light.half_width / shadow_size);
   gl.glBindFramebuffer(GL_FRAMEBUFFER, r_->framebuffers[2]);

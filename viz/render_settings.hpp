@@ -15,7 +15,7 @@ struct RenderSettings {
   int width = 1280, height = 720;
   std::optional<Vec3> camera_position, camera_target;  // automatic framing where absent
   double fov = 0.61;                                    // vertical field of view (rad)
-  Vec3 light_direction = {-0.45, -1.0, -0.55};          // the direction the light travels
+  std::optional<Vec3> light_direction;                  // the direction the light travels
   bool shadows = true, ambient_occlusion = true, ground = true, legend = true, cutaway = false;
   std::optional<double> ground_height;  // default: the domain's floor
   Rgb background_top = {0.80f, 0.85f, 0.91f}, background_bottom = {0.97f, 0.97f, 0.96f};

@@ -59,6 +59,37 @@ class Mesher {
 
 }  // namespace
 
+SignedDistance clip_to_box(SignedDistance sdf, const Vec3& lo, const Vec3& hi) {
+  return [sdf = std::move(sdf), lo, hi](const Vec3& x, Vec3& normal) {
+    // Exact box distance (Quilez, "distance functions"): outside, the length of the excess;
+    // inside, the (negative) distance to the nearest face.
+    Vec3 q, outside = {0, 0, 0};
+    std::size_t nearest = 0;
+    for (std::size_t d = 0; d < 3; ++d) {
+      const double c = 0.5 * (lo[d] + hi[d]), r = x[d] - c;
+      q[d] = std::abs(r) - 0.5 * (hi[d] - lo[d]);
+      outside[d] = q[d] > 0 ? (r > 0 ? q[d] : -q[d]) : 0;
+      if (q[d] > q[nearest]) nearest = d;
+    }
+    const double out = length(outside);
+    double box;
+    Vec3 box_normal = {0, 0, 0};
+    if (out > 0) {
+      box = out;
+      box_normal = (1 / out) * outside;
+    } else {
+      box = q[nearest];
+      box_normal[nearest] = x[nearest] > 0.5 * (lo[nearest] + hi[nearest]) ? 1 : -1;
+    }
+    const double d = sdf(x, normal);
+    if (box > d) {
+      normal = box_normal;
+      return box;
+    }
+    return d;
+  };
+}
+
 TriangleMesh mesh_signed_distance(const SignedDistance& sdf, const Vec3& lo, const Vec3& hi, int cells) {
   const double h = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) / cells;
   int n[3];

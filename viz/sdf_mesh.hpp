@@ -18,6 +18,10 @@ struct TriangleMesh {
   std::size_t vertex_count() const { return vertices.size() / 6; }
 };
 
+// The solid of `sdf` cut to the box [lo, hi] (the intersection: max of the two distances), so
+// that a half-space shows as a closed block of the domain rather than an open sheet.
+SignedDistance clip_to_box(SignedDistance sdf, const Vec3& lo, const Vec3& hi);
+
 // The zero level set of `sdf` inside the box [lo, hi], sampled on a grid of `cells` cells along
 // the box's longest side, by marching tetrahedra (each cube split into six tetrahedra around its
 // main diagonal; Doi and Koide 1991). Normals come from the distance function.

@@ -51,7 +51,7 @@ struct RenderSpec {
   std::optional<double> color_min, color_max;
   std::optional<Point> camera_position, camera_target;  // automatic framing where absent
   double fov = 0.6108652381980153;                      // vertical, rad (35 degrees)
-  Point light_direction = {-0.45, -1.0, -0.55};
+  std::optional<Point> light_direction;  // default: from above, over the camera's shoulder
   bool shadows = true, ambient_occlusion = true, ground = true, legend = true, cutaway = false;
   std::optional<double> ground_height;  // default: the domain's floor
   double sphere_scale = 1.2;            // sphere diameter in particle spacings

@@ -643,7 +643,7 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
     s.render.camera_position = r.optional_vec3("camera_position");
     s.render.camera_target = r.optional_vec3("camera_target");
     s.render.fov = r.number("fov");
-    s.render.light_direction = r.vec3("light_direction");
+    s.render.light_direction = r.optional_vec3("light_direction");
     if (s.render.light_direction == Point{0, 0, 0}) r.fail("light_direction", "must not be zero");
     s.render.shadows = r.boolean("shadows");
     s.render.ambient_occlusion = r.boolean("ambient_occlusion");

@@ -177,8 +177,9 @@ std::vector<SectionSpec> build_schema() {
                    {"camera_target", K::vector3, Q::length, "", false,
                     "point the camera looks at (default: the centre of the particles at the start)"},
                    {"fov", K::number, Q::angle, "\"35 deg\"", false, "vertical field of view", 0, 3, true},
-                   {"light_direction", K::vector3, Q::dimensionless, "[-0.45, -1.0, -0.55]", false,
-                    "direction the key light travels (need not be unit length)"},
+                   {"light_direction", K::vector3, Q::dimensionless, "", false,
+                    "direction the key light travels, need not be unit length (default: down and away from the "
+                    "camera, from over its shoulder)"},
                    {"shadows", K::boolean, Q::dimensionless, "true", false, "shadow-mapped key light"},
                    {"ambient_occlusion", K::boolean, Q::dimensionless, "true", false,
                     "screen-space ambient occlusion, so particles read as a volume"},
