@@ -1,6 +1,6 @@
 // firn bench render [--particles N] [--width W] [--height H] [--gl egl|osmesa] [--frames F] [--png FILE]
 // Times the sphere renderer on a synthetic set: a jittered cubic lattice of N particles in three
-// material layers, with shadows, ambient occlusion and the ground. Each timed frame is drawn,
+// material layers standing on the ground, with shadows and ambient occlusion. Each timed frame is drawn,
 // read back and PNG-encoded in sequence; prints the medians:
 //   ms_per_frame (draw + read-back + PNG encoding), render_ms, png_ms, and the GL context.
 #include <algorithm>
@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <vector>
 
 #include "apps/commands.hpp"
@@ -17,6 +16,7 @@
 #include "viz/frame_pipeline.hpp"
 #include "viz/frame_renderer.hpp"
 #include "viz/png_writer.hpp"
+#include "viz/synthetic_particles.hpp"
 
 namespace firn::app {
 namespace {
@@ -33,30 +33,17 @@ double median(std::vector<double> v) {
 }
 
 void bench_render(const BenchRenderOptions& o) {
-  // A cube of side 0.2 m on a lattice with the particle count's spacing, jittered by a quarter.
-  const long side = std::max(1L, std::lround(std::cbrt(double(o.particles))));
-  const double h = 0.2 / side;
-  std::mt19937 rng(1);
-  std::uniform_real_distribution<float> jitter(-0.25f * float(h), 0.25f * float(h));
-  std::vector<float> x[3];
-  for (long i = 0; i < o.particles; ++i) {
-    const long a = i % side, b = (i / side) % side, c = i / (side * side);
-    x[0].push_back(float((a + 0.5) * h) + jitter(rng));
-    x[1].push_back(float(0.02 + (c + 0.5) * h) + jitter(rng));
-    x[2].push_back(float((b + 0.5) * h) + jitter(rng));
-  }
+  // A cube of side 0.2 m standing on the ground, in three material layers.
+  const viz::SyntheticParticles block = viz::jittered_block(o.particles, 0.2, {0, 0.0, 0});
   viz::RenderSettings s;
   s.width = o.width, s.height = o.height;
-  s.particle_spacing = h;
-  s.sphere_radius = 0.6 * h;
+  s.particle_spacing = block.spacing;
+  s.sphere_radius = 0.6 * block.spacing;
   s.domain_min = {-0.1, 0, -0.1}, s.domain_max = {0.3, 0.3, 0.3};
-  s.material_names = {"bottom", "middle", "top"};
-  for (int m = 0; m < 3; ++m) s.material_colors.push_back(viz::default_material_color(m));
   viz::FrameScene scene;
-  for (int d = 0; d < 3; ++d) scene.positions.x[d] = x[d].data();
-  scene.positions.count = std::size_t(o.particles);
+  scene.positions = block.columns();
   const std::size_t n = scene.positions.count;
-  for (std::size_t m = 0; m < 3; ++m) scene.ranges.push_back({m * n / 3, (m + 1) * n / 3, s.material_colors[m]});
+  for (std::size_t m = 0; m < 3; ++m) scene.ranges.push_back({m * n / 3, (m + 1) * n / 3, viz::default_material_color(int(m))});
 
   const auto context = viz::make_gl_context(viz::parse_gl_api(o.gl));
   viz::FrameRenderer renderer(*context, s);
