@@ -13,19 +13,28 @@ namespace firn::viz {
 namespace {
 
 constexpr int kColorMapSize = 256;
+constexpr double kGroundRadius = 8;  // the ground's half-width, in camera radii
 enum TextureUnit { kAlbedoUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kShadowUnit = 3, kColorMapUnit = 4 };
 
 std::array<float, 3> to_float(const Vec3& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
 
+// The lighting pass with the settings' switches defined after its #version line.
+std::string composite_source(const RenderSettings& s) {
+  std::string source = shaders::kCompositeFragment;
+  const std::string defines = "#define SHADOWS " + std::to_string(int(s.shadows)) + "\n#define AMBIENT_OCCLUSION " +
+                              std::to_string(int(s.ambient_occlusion)) + "\n";
+  return source.insert(source.find('\n') + 1, defines);
+}
+
 }  // namespace
 
 struct FrameRenderer::Resources {
-  explicit Resources(const Gl& gl)
+  Resources(const Gl& gl, const RenderSettings& settings)
       : sphere(gl, "spheres", shaders::kSphereVertex, shaders::kSphereFragment),
         sphere_shadow(gl, "sphere shadows", shaders::kSphereVertex, shaders::kSphereShadowFragment),
         mesh(gl, "meshes", shaders::kMeshVertex, shaders::kMeshFragment),
         mesh_shadow(gl, "mesh shadows", shaders::kMeshVertex, shaders::kDepthOnlyFragment),
-        composite(gl, "composite", shaders::kCompositeVertex, shaders::kCompositeFragment) {}
+        composite(gl, "composite", shaders::kCompositeVertex, composite_source(settings)) {}
   GlProgram sphere, sphere_shadow, mesh, mesh_shadow, composite;
   GLuint vao[3] = {};           // spheres, meshes, the empty one of the full-screen pass
   GLuint buffers[6] = {};       // x0, x1, x2, scalar, mesh vertices, particle indices
@@ -68,7 +77,7 @@ void attach(const Gl& gl, GLuint framebuffer, std::initializer_list<GLuint> colo
 }  // namespace
 
 FrameRenderer::FrameRenderer(const GlContext& context, const RenderSettings& settings)
-    : gl_(context.gl()), settings_(settings), r_(std::make_unique<Resources>(gl_)) {
+    : gl_(context.gl()), settings_(settings), r_(std::make_unique<Resources>(gl_, settings)) {
   const Gl& gl = gl_;
   gl.glGenVertexArrays(3, r_->vao);
   gl.glGenBuffers(6, r_->buffers);
@@ -156,7 +165,9 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
   // Ground and collider meshes in one vertex buffer: the ground quad first.
   std::vector<float> meshes;
   const double ground_y = s.ground_height.value_or(s.domain_min[1]);
-  const double ground_half = 40 * camera.radius;
+  // The ground is a square around the target that fades into the background by its edge, so
+  // nothing beyond it costs lighting.
+  const double ground_half = kGroundRadius * camera.radius;
   if (s.ground) {
     const double cx = camera.target[0], cz = camera.target[2];
     const double corners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
@@ -243,7 +254,7 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
       p.set("base_color", ground_color.data());
       p.set("checker", float(camera.radius / 2));
       p.set("fade_center", centre.data());
-      p.set("fade_radius", float(8 * camera.radius));
+      p.set("fade_radius", float(ground_half));
       gl.glDrawArrays(GL_TRIANGLES, 0, ground_vertices);
     }
     const Rgb collider_color = {0.55f, 0.57f, 0.62f};
@@ -273,17 +284,15 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
   c.set("normal_tex", int(kNormalUnit));
   c.set("depth_tex", int(kDepthUnit));
   c.set("shadow_map", int(kShadowUnit));
-  c.set("texel", 1.0f / float(s.width), 1.0f / float(s.height));
+  c.set("viewport", s.width, s.height);
   c.set("near_plane", float(camera.near));
   c.set("far_plane", float(camera.far));
   c.set("projection_scale", projection.at(0, 0), projection.at(1, 1));
   c.set("light_dir_view", light_dir_view.data());
   c.set("up_view", up_view.data());
   c.set("view_to_shadow", view_to_shadow);
-  c.set("shadows", s.shadows ? 1 : 0);
   c.set("shadow_bias", 2.0f * shadow_texel);
   c.set("shadow_texel", 1.0f / float(shadow_size));
-  c.set("ambient_occlusion", s.ambient_occlusion ? 1 : 0);
   // AO samples reach about four particle radii, projected at the target's distance.
   const double pixels_per_metre = s.height / (2 * std::tan(camera.fov / 2) * length(camera.eye - camera.target));
   c.set("ao_radius_px", float(std::clamp(4 * s.sphere_radius * pixels_per_metre, 2.0, 40.0)));

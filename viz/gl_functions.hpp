@@ -56,6 +56,7 @@ namespace firn::viz {
   X(glUniform1i, PFNGLUNIFORM1IPROC)                                              \
   X(glUniform1f, PFNGLUNIFORM1FPROC)                                              \
   X(glUniform2f, PFNGLUNIFORM2FPROC)                                              \
+  X(glUniform2i, PFNGLUNIFORM2IPROC)                                              \
   X(glUniform3fv, PFNGLUNIFORM3FVPROC)                                            \
   X(glUniformMatrix4fv, PFNGLUNIFORMMATRIX4FVPROC)                                \
   X(glGenVertexArrays, PFNGLGENVERTEXARRAYSPROC)                                  \

@@ -21,6 +21,7 @@ class GlProgram {
   void set(const char* name, int v) const { gl_.glUniform1i(location(name), v); }
   void set(const char* name, float v) const { gl_.glUniform1f(location(name), v); }
   void set(const char* name, float a, float b) const { gl_.glUniform2f(location(name), a, b); }
+  void set(const char* name, int a, int b) const { gl_.glUniform2i(location(name), a, b); }
   void set(const char* name, const float v[3]) const { gl_.glUniform3fv(location(name), 1, v); }
   void set(const char* name, const Mat4& m) const { gl_.glUniformMatrix4fv(location(name), 1, GL_FALSE, m.m.data()); }
 

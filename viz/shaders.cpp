@@ -138,27 +138,29 @@ const char* const kCompositeFragment = R"(#version 330 core
 in vec2 uv;
 uniform sampler2D albedo_tex, normal_tex, depth_tex;
 uniform sampler2DShadow shadow_map;
-uniform vec2 texel;
+uniform ivec2 viewport;          // pixels
 uniform float near_plane, far_plane;
 uniform vec2 projection_scale;   // projection[0][0], projection[1][1]
 uniform vec3 light_dir_view;     // towards the light
 uniform vec3 up_view;
 uniform mat4 view_to_shadow;     // view space -> shadow map [0,1]^3
-uniform int shadows;
 uniform float shadow_bias;       // normal offset (m)
 uniform float shadow_texel;      // one shadow-map texel in [0, 1]
-uniform int ambient_occlusion;
 uniform float ao_radius_px;
 uniform float ao_range;          // m
 uniform vec3 background_top, background_bottom;
 out vec4 color;
 
-float eye_depth(vec2 at) {
-  float z = 2.0 * texture(depth_tex, at).r - 1.0;
+// Exact texel reads (texelFetch): no filtering, and far cheaper than texture() on llvmpipe.
+float depth_at(ivec2 at) { return texelFetch(depth_tex, clamp(at, ivec2(0), viewport - 1), 0).r; }
+float eye_depth(ivec2 at) {
+  float z = 2.0 * depth_at(at) - 1.0;
   return 2.0 * near_plane * far_plane / (far_plane + near_plane - z * (far_plane - near_plane));
 }
 float lit_fraction(vec3 p, vec3 n) {
-  if (shadows == 0) return 1.0;
+#if !SHADOWS
+  return 1.0;
+#endif
   vec4 s = view_to_shadow * vec4(p + n * shadow_bias, 1.0);
   if (any(lessThan(s.xyz, vec3(0.0))) || any(greaterThan(s.xyz, vec3(1.0)))) return 1.0;
   // Four bilinear comparisons half a texel apart: a 3x3-texel tent filter.
@@ -173,11 +175,13 @@ float lit_fraction(vec3 p, vec3 n) {
 const vec2 kSpiral[8] = vec2[](vec2(0.2500, 0.0000), vec2(-0.3193, 0.2925), vec2(0.0489, -0.5569),
                                vec2(0.4024, 0.5249), vec2(-0.7385, -0.1306), vec2(0.6996, -0.4450),
                                vec2(-0.2340, 0.8705), vec2(-0.4463, -0.8593));
-vec3 view_position(vec2 at, float z) { return vec3((2.0 * at - 1.0) * z / projection_scale, -z); }
-float occlusion(vec3 p, vec3 n) {
+vec3 view_position(ivec2 at, float z) {
+  return vec3((2.0 * (vec2(at) + 0.5) / vec2(viewport) - 1.0) * z / projection_scale, -z);
+}
+float occlusion(ivec2 pixel, vec3 p, vec3 n) {
   float sum = 0.0, r2 = ao_range * ao_range;
   for (int i = 0; i < 8; ++i) {
-    vec2 at = uv + kSpiral[i] * ao_radius_px * texel;
+    ivec2 at = pixel + ivec2(round(kSpiral[i] * ao_radius_px));
     vec3 v = view_position(at, eye_depth(at)) - p;
     float vv = dot(v, v);
     sum += max(0.0, dot(v, n) - 0.05 * ao_range) * ao_range / (vv + 0.01 * r2) * max(0.0, 1.0 - vv / (4.0 * r2));
@@ -186,13 +190,18 @@ float occlusion(vec3 p, vec3 n) {
 }
 void main() {
   vec3 background = mix(background_bottom, background_top, uv.y);
-  if (texture(depth_tex, uv).r >= 1.0) {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  if (depth_at(pixel) >= 1.0) {
     color = vec4(background, 1.0);
     return;
   }
-  vec4 ag = texture(albedo_tex, uv), nf = texture(normal_tex, uv);
+  vec4 ag = texelFetch(albedo_tex, pixel, 0), nf = texelFetch(normal_tex, pixel, 0);
+  if (nf.w >= 1.0) {  // the ground where it has faded out
+    color = vec4(background, 1.0);
+    return;
+  }
   vec3 n = normalize(2.0 * nf.xyz - 1.0);
-  vec3 p = view_position(uv, eye_depth(uv));
+  vec3 p = view_position(pixel, eye_depth(pixel));
   vec3 albedo = ag.rgb * ag.rgb;
   float lit = lit_fraction(p, n);
   float diffuse = max(dot(n, light_dir_view), 0.0) * lit;
@@ -200,7 +209,9 @@ void main() {
   vec3 h = normalize(light_dir_view + normalize(-p));
   float spec = ag.a * pow(max(dot(n, h), 0.0), 48.0) * lit;
   vec3 c = albedo * (vec3(1.0, 0.97, 0.92) * 1.05 * diffuse + ambient) + vec3(spec);
-  if (ambient_occlusion == 1) c *= 1.0 - 0.8 * occlusion(p, n);
+#if AMBIENT_OCCLUSION
+  c *= 1.0 - 0.8 * occlusion(pixel, p, n);
+#endif
   c = c / (1.0 + 0.15 * c);
   c = sqrt(c);
   color = vec4(mix(c, background, nf.w), 1.0);

@@ -19,7 +19,9 @@ extern const char* const kSphereShadowFragment;
 extern const char* const kMeshVertex;
 extern const char* const kMeshFragment;
 extern const char* const kDepthOnlyFragment;
-// Full-screen pass: lighting, shadows, ambient occlusion, background, tone and gamma.
+// Full-screen pass: lighting, shadows, ambient occlusion, background, tone and gamma. SHADOWS
+// and AMBIENT_OCCLUSION are preprocessor switches (0 or 1) put after the #version line, because
+// llvmpipe runs both sides of a branch on a uniform under a mask: only leaving code out saves it.
 extern const char* const kCompositeVertex;
 extern const char* const kCompositeFragment;
 
