@@ -1,5 +1,7 @@
 #include "viz/engine_frame.hpp"
 
+#include <type_traits>
+
 #include "viz/collider_sdf.hpp"
 #include "viz/color_field.hpp"
 

@@ -21,6 +21,6 @@ struct CutPlane {
 // Indices of the exposed particles, ascending. Without culling (the occupancy grid would exceed
 // `max_cells` cells) every particle not cut away is exposed.
 std::vector<std::uint32_t> exposed_particles(const PositionColumns& positions, double spacing,
-                                             const std::optional<CutPlane>& cut, std::size_t max_cells = 1u << 26);
+                                             const std::optional<CutPlane>& cut, std::size_t max_cells = 1u << 24);
 
 }  // namespace firn::viz

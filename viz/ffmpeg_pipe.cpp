@@ -53,6 +53,7 @@ FfmpegPipe::FfmpegPipe(const std::string& path, int width, int height, int fps)
   }
   if (child_ == 0) {
     ::setpriority(PRIO_PROCESS, 0, 19);  // below the simulation, like the PNG writer
+    ::setpgid(0, 0);  // its own process group: Ctrl-C stops firn, which then closes the video
     ::dup2(fds[0], STDIN_FILENO);
     ::close(fds[0]);
     ::close(fds[1]);
