@@ -14,16 +14,17 @@ namespace {
 
 constexpr int kColorMapSize = 256;
 constexpr double kGroundRadius = 8;  // the ground's half-width, in camera radii
-enum TextureUnit { kAlbedoUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kShadowUnit = 3, kColorMapUnit = 4 };
+enum TextureUnit { kAlbedoUnit, kNormalUnit, kDepthUnit, kShadowUnit, kOcclusionUnit, kColorMapUnit };
 
 std::array<float, 3> to_float(const Vec3& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
 
-// The lighting pass with the settings' switches defined after its #version line.
-std::string composite_source(const RenderSettings& s) {
-  std::string source = shaders::kCompositeFragment;
-  const std::string defines = "#define SHADOWS " + std::to_string(int(s.shadows)) + "\n#define AMBIENT_OCCLUSION " +
-                              std::to_string(int(s.ambient_occlusion)) + "\n";
-  return source.insert(source.find('\n') + 1, defines);
+// A full-screen pass's source with the settings' switches and the shared functions inserted
+// after its #version line.
+std::string screen_pass_source(const char* body, const RenderSettings& s) {
+  std::string source = body;
+  const std::string prelude = "#define SHADOWS " + std::to_string(int(s.shadows)) + "\n#define AMBIENT_OCCLUSION " +
+                              std::to_string(int(s.ambient_occlusion)) + "\n" + shaders::kScreenFunctions;
+  return source.insert(source.find('\n') + 1, prelude);
 }
 
 }  // namespace
@@ -34,12 +35,14 @@ struct FrameRenderer::Resources {
         sphere_shadow(gl, "sphere shadows", shaders::kSphereVertex, shaders::kSphereShadowFragment),
         mesh(gl, "meshes", shaders::kMeshVertex, shaders::kMeshFragment),
         mesh_shadow(gl, "mesh shadows", shaders::kMeshVertex, shaders::kDepthOnlyFragment),
-        composite(gl, "composite", shaders::kCompositeVertex, composite_source(settings)) {}
-  GlProgram sphere, sphere_shadow, mesh, mesh_shadow, composite;
+        occlusion(gl, "occlusion", shaders::kCompositeVertex, screen_pass_source(shaders::kOcclusionFragment, settings)),
+        composite(gl, "composite", shaders::kCompositeVertex, screen_pass_source(shaders::kCompositeFragment, settings)) {}
+  GlProgram sphere, sphere_shadow, mesh, mesh_shadow, occlusion, composite;
   GLuint vao[3] = {};           // spheres, meshes, the empty one of the full-screen pass
   GLuint buffers[6] = {};       // x0, x1, x2, scalar, mesh vertices, particle indices
-  GLuint framebuffers[3] = {};  // shadow, geometry (albedo, normal, depth), final
-  GLuint textures[6] = {};      // shadow depth, albedo, normal (packed 0.5 n + 0.5), depth, final, colour map
+  GLuint framebuffers[4] = {};  // shadow, geometry (albedo, normal, depth), occlusion, final
+  // shadow depth, albedo, normal (packed 0.5 n + 0.5), depth, occlusion (half size), final, colour map
+  GLuint textures[7] = {};
   int shadow_size = 0;          // texels along the shadow map's side
 };
 
@@ -81,7 +84,7 @@ FrameRenderer::FrameRenderer(const GlContext& context, const RenderSettings& set
   const Gl& gl = gl_;
   gl.glGenVertexArrays(3, r_->vao);
   gl.glGenBuffers(6, r_->buffers);
-  gl.glGenFramebuffers(3, r_->framebuffers);
+  gl.glGenFramebuffers(4, r_->framebuffers);
   const int w = settings_.width, h = settings_.height;
   GLuint* t = r_->textures;
   // About as many shadow-map texels per metre as the image has pixels per metre at the target.
@@ -93,8 +96,9 @@ FrameRenderer::FrameRenderer(const GlContext& context, const RenderSettings& set
   t[1] = make_texture(gl, GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE, GL_NEAREST);
   t[2] = make_texture(gl, GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE, GL_NEAREST);
   t[3] = make_texture(gl, GL_DEPTH_COMPONENT24, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
-  t[4] = make_texture(gl, GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE, GL_NEAREST);
-  t[5] = make_texture(gl, GL_RGB8, kColorMapSize, 1, GL_RGB, GL_UNSIGNED_BYTE, GL_LINEAR);
+  t[4] = make_texture(gl, GL_R8, (w + 1) / 2, (h + 1) / 2, GL_RED, GL_UNSIGNED_BYTE, GL_LINEAR);
+  t[5] = make_texture(gl, GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE, GL_NEAREST);
+  t[6] = make_texture(gl, GL_RGB8, kColorMapSize, 1, GL_RGB, GL_UNSIGNED_BYTE, GL_LINEAR);
   std::vector<unsigned char> lut(3 * kColorMapSize);
   for (int i = 0; i < kColorMapSize; ++i) {
     const Rgb c = color_map_rgb(settings_.color_map, double(i) / (kColorMapSize - 1));
@@ -104,13 +108,14 @@ FrameRenderer::FrameRenderer(const GlContext& context, const RenderSettings& set
   gl.glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, kColorMapSize, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, lut.data());
   attach(gl, r_->framebuffers[0], {}, t[0], "shadow map");
   attach(gl, r_->framebuffers[1], {t[1], t[2]}, t[3], "geometry");
-  attach(gl, r_->framebuffers[2], {t[4]}, 0, "final");
+  attach(gl, r_->framebuffers[2], {t[4]}, 0, "occlusion");
+  attach(gl, r_->framebuffers[3], {t[5]}, 0, "final");
   gl.check("creating the renderer's framebuffers");
 }
 
 FrameRenderer::~FrameRenderer() {
-  gl_.glDeleteTextures(6, r_->textures);
-  gl_.glDeleteFramebuffers(3, r_->framebuffers);
+  gl_.glDeleteTextures(7, r_->textures);
+  gl_.glDeleteFramebuffers(4, r_->framebuffers);
   gl_.glDeleteBuffers(6, r_->buffers);
   gl_.glDeleteVertexArrays(3, r_->vao);
 }
@@ -229,7 +234,7 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
     p.set("pixels_per_unit", float(0.5 * s.height * projection.at(1, 1)));
     p.set("inverse_viewport", 1.0f / float(s.width), 1.0f / float(s.height));
     gl.glActiveTexture(GL_TEXTURE0 + kColorMapUnit);
-    gl.glBindTexture(GL_TEXTURE_2D, r_->textures[5]);
+    gl.glBindTexture(GL_TEXTURE_2D, r_->textures[6]);
     p.set("color_map", int(kColorMapUnit));
     gl.glBindVertexArray(r_->vao[0]);
     if (scene.scalar) {
@@ -264,42 +269,54 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
     gl.glDrawArrays(GL_TRIANGLES, ground_vertices, mesh_vertices - ground_vertices);
   }
 
-  // 3. Lighting, shadows, ambient occlusion, background, tone and gamma into 8-bit RGBA.
+  // 3. Ambient occlusion at half resolution, then lighting, shadows, background, tone and gamma
+  //    into 8-bit RGBA.
+  gl.glDisable(GL_DEPTH_TEST);
+  const GLuint inputs[5] = {r_->textures[1], r_->textures[2], r_->textures[3], r_->textures[0], r_->textures[4]};
+  for (int unit = 0; unit < 5; ++unit) {
+    gl.glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    gl.glBindTexture(GL_TEXTURE_2D, inputs[unit]);
+  }
+  auto set_screen = [&](const GlProgram& p) {
+    p.use();
+    p.set("albedo_tex", int(kAlbedoUnit));
+    p.set("normal_tex", int(kNormalUnit));
+    p.set("depth_tex", int(kDepthUnit));
+    p.set("shadow_map", int(kShadowUnit));
+    p.set("occlusion_tex", int(kOcclusionUnit));
+    p.set("viewport", s.width, s.height);
+    p.set("near_plane", float(camera.near));
+    p.set("far_plane", float(camera.far));
+    p.set("projection_scale", projection.at(0, 0), projection.at(1, 1));
+  };
+  gl.glBindVertexArray(r_->vao[2]);
+  if (s.ambient_occlusion) {
+    gl.glBindFramebuffer(GL_FRAMEBUFFER, r_->framebuffers[2]);
+    gl.glViewport(0, 0, (s.width + 1) / 2, (s.height + 1) / 2);
+    set_screen(r_->occlusion);
+    // Samples reach about four particle radii, projected at the target's distance.
+    const double pixels_per_metre = s.height / (2 * std::tan(camera.fov / 2) * length(camera.eye - camera.target));
+    r_->occlusion.set("ao_radius_px", float(std::clamp(4 * s.sphere_radius * pixels_per_metre, 2.0, 40.0)));
+    r_->occlusion.set("ao_range", float(4 * s.sphere_radius));
+    gl.glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
   Mat4 to_unit = Mat4::identity();  // clip [-1, 1] -> texture [0, 1]
   for (int i = 0; i < 3; ++i) to_unit.at(i, i) = 0.5f, to_unit.at(i, 3) = 0.5f;
   const Mat4 view_to_shadow = to_unit * light.projection * light.view * inverse_rigid(view);
   const auto light_dir_view = to_float(normalize(rotate(view, -1.0 * camera.light_direction)));
   const auto up_view = to_float(rotate(view, {0, 1, 0}));
   const float shadow_texel = float(2 * light.half_width / shadow_size);
-  gl.glBindFramebuffer(GL_FRAMEBUFFER, r_->framebuffers[2]);
-  gl.glDisable(GL_DEPTH_TEST);
-  const GLuint inputs[4] = {r_->textures[1], r_->textures[2], r_->textures[3], r_->textures[0]};
-  for (int unit = 0; unit < 4; ++unit) {
-    gl.glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    gl.glBindTexture(GL_TEXTURE_2D, inputs[unit]);
-  }
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, r_->framebuffers[3]);
+  gl.glViewport(0, 0, s.width, s.height);
   const GlProgram& c = r_->composite;
-  c.use();
-  c.set("albedo_tex", int(kAlbedoUnit));
-  c.set("normal_tex", int(kNormalUnit));
-  c.set("depth_tex", int(kDepthUnit));
-  c.set("shadow_map", int(kShadowUnit));
-  c.set("viewport", s.width, s.height);
-  c.set("near_plane", float(camera.near));
-  c.set("far_plane", float(camera.far));
-  c.set("projection_scale", projection.at(0, 0), projection.at(1, 1));
+  set_screen(c);
   c.set("light_dir_view", light_dir_view.data());
   c.set("up_view", up_view.data());
   c.set("view_to_shadow", view_to_shadow);
   c.set("shadow_bias", 2.0f * shadow_texel);
   c.set("shadow_texel", 1.0f / float(shadow_size));
-  // AO samples reach about four particle radii, projected at the target's distance.
-  const double pixels_per_metre = s.height / (2 * std::tan(camera.fov / 2) * length(camera.eye - camera.target));
-  c.set("ao_radius_px", float(std::clamp(4 * s.sphere_radius * pixels_per_metre, 2.0, 40.0)));
-  c.set("ao_range", float(4 * s.sphere_radius));
   c.set("background_top", s.background_top.data());
   c.set("background_bottom", s.background_bottom.data());
-  gl.glBindVertexArray(r_->vao[2]);
   gl.glDrawArrays(GL_TRIANGLES, 0, 3);
 
   // 4. Read back; GL's rows run bottom to top.

@@ -126,37 +126,74 @@ void main() {
 }
 )";
 
-// Lighting in view space: a key light with a shadow map looked up with percentage-closer
-// filtering (Reeves et al. 1987) and a normal-offset bias, a hemisphere ambient term and a
-// Blinn-Phong highlight. Ambient occlusion is the Alchemy screen-space obscurance (McGuire et al.
-// 2011): for neighbours p_i reconstructed from the depth buffer on a golden-angle spiral,
-// A = 1 - s / N sum max(0, v_i . n - bias) / (v_i . v_i + eps), v_i = p_i - p, with a falloff
-// at `ao_range`; points in the pixel's own tangent plane (a flat ground) never occlude. Then a
-// mild Reinhard-style tone curve. Colours go to linear light and back with gamma 2 (squares and
-// square roots: far cheaper than pow on llvmpipe, and close to sRGB's 2.2).
-const char* const kCompositeFragment = R"(#version 330 core
-in vec2 uv;
-uniform sampler2D albedo_tex, normal_tex, depth_tex;
-uniform sampler2DShadow shadow_map;
-uniform ivec2 viewport;          // pixels
+// Declarations and functions both full-screen passes use (inserted after their #version line):
+// view-space positions rebuilt from the depth buffer.
+const char* const kScreenFunctions = R"(
+uniform sampler2D depth_tex;
+uniform ivec2 viewport;          // pixels of the depth buffer
 uniform float near_plane, far_plane;
 uniform vec2 projection_scale;   // projection[0][0], projection[1][1]
-uniform vec3 light_dir_view;     // towards the light
-uniform vec3 up_view;
-uniform mat4 view_to_shadow;     // view space -> shadow map [0,1]^3
-uniform float shadow_bias;       // normal offset (m)
-uniform float shadow_texel;      // one shadow-map texel in [0, 1]
-uniform float ao_radius_px;
-uniform float ao_range;          // m
-uniform vec3 background_top, background_bottom;
-out vec4 color;
-
 // Exact texel reads (texelFetch): no filtering, and far cheaper than texture() on llvmpipe.
 float depth_at(ivec2 at) { return texelFetch(depth_tex, clamp(at, ivec2(0), viewport - 1), 0).r; }
 float eye_depth(ivec2 at) {
   float z = 2.0 * depth_at(at) - 1.0;
   return 2.0 * near_plane * far_plane / (far_plane + near_plane - z * (far_plane - near_plane));
 }
+vec3 view_position(ivec2 at, float z) {
+  return vec3((2.0 * (vec2(at) + 0.5) / vec2(viewport) - 1.0) * z / projection_scale, -z);
+}
+vec3 view_normal(vec4 stored) { return normalize(2.0 * stored.xyz - 1.0); }
+)";
+
+// Ambient occlusion at half resolution: the Alchemy screen-space obscurance (McGuire et al.
+// 2011). For neighbours p_i rebuilt from the depth buffer on a golden-angle spiral,
+// A = 1 - s / N sum max(0, v_i . n - bias) / (v_i . v_i + eps), v_i = p_i - p, with a falloff at
+// `ao_range`; points in the pixel's own tangent plane (a flat ground) never occlude. Writes A
+// (1 where nothing is drawn); the lighting pass reads it back bilinearly.
+const char* const kOcclusionFragment = R"(#version 330 core
+uniform sampler2D normal_tex;
+uniform float ao_radius_px;      // in full-resolution pixels
+uniform float ao_range;          // m
+out float visibility;
+// Sample i at radius sqrt((i + 1/2) / 8) and angle 2.39996 i (the golden angle), precomputed.
+const vec2 kSpiral[8] = vec2[](vec2(0.2500, 0.0000), vec2(-0.3193, 0.2925), vec2(0.0489, -0.5569),
+                               vec2(0.4024, 0.5249), vec2(-0.7385, -0.1306), vec2(0.6996, -0.4450),
+                               vec2(-0.2340, 0.8705), vec2(-0.4463, -0.8593));
+void main() {
+  ivec2 pixel = 2 * ivec2(gl_FragCoord.xy);
+  vec4 nf = texelFetch(normal_tex, pixel, 0);
+  if (depth_at(pixel) >= 1.0 || nf.w >= 1.0) {
+    visibility = 1.0;
+    return;
+  }
+  vec3 p = view_position(pixel, eye_depth(pixel)), n = view_normal(nf);
+  float sum = 0.0, r2 = ao_range * ao_range;
+  for (int i = 0; i < 8; ++i) {
+    ivec2 at = pixel + ivec2(round(kSpiral[i] * ao_radius_px));
+    vec3 v = view_position(at, eye_depth(at)) - p;
+    float vv = dot(v, v);
+    sum += max(0.0, dot(v, n) - 0.05 * ao_range) * ao_range / (vv + 0.01 * r2) * max(0.0, 1.0 - vv / (4.0 * r2));
+  }
+  visibility = 1.0 - 0.8 * clamp(sum / 8.0, 0.0, 1.0);
+}
+)";
+
+// Lighting in view space: a key light with a shadow map looked up with percentage-closer
+// filtering (Reeves et al. 1987) and a normal-offset bias, a hemisphere ambient term, a
+// Blinn-Phong highlight and the occlusion pass's result. Then a mild Reinhard-style tone curve.
+// Colours go to linear light and back with gamma 2 (squares and square roots: far cheaper than
+// pow on llvmpipe, and close to sRGB's 2.2).
+const char* const kCompositeFragment = R"(#version 330 core
+in vec2 uv;
+uniform sampler2D albedo_tex, normal_tex, occlusion_tex;
+uniform sampler2DShadow shadow_map;
+uniform vec3 light_dir_view;     // towards the light
+uniform vec3 up_view;
+uniform mat4 view_to_shadow;     // view space -> shadow map [0,1]^3
+uniform float shadow_bias;       // normal offset (m)
+uniform float shadow_texel;      // one shadow-map texel in [0, 1]
+uniform vec3 background_top, background_bottom;
+out vec4 color;
 float lit_fraction(vec3 p, vec3 n) {
 #if !SHADOWS
   return 1.0;
@@ -171,36 +208,15 @@ float lit_fraction(vec3 p, vec3 n) {
   }
   return 0.25 * sum;
 }
-// Sample i at radius sqrt((i + 1/2) / 8) and angle 2.39996 i (the golden angle), precomputed.
-const vec2 kSpiral[8] = vec2[](vec2(0.2500, 0.0000), vec2(-0.3193, 0.2925), vec2(0.0489, -0.5569),
-                               vec2(0.4024, 0.5249), vec2(-0.7385, -0.1306), vec2(0.6996, -0.4450),
-                               vec2(-0.2340, 0.8705), vec2(-0.4463, -0.8593));
-vec3 view_position(ivec2 at, float z) {
-  return vec3((2.0 * (vec2(at) + 0.5) / vec2(viewport) - 1.0) * z / projection_scale, -z);
-}
-float occlusion(ivec2 pixel, vec3 p, vec3 n) {
-  float sum = 0.0, r2 = ao_range * ao_range;
-  for (int i = 0; i < 8; ++i) {
-    ivec2 at = pixel + ivec2(round(kSpiral[i] * ao_radius_px));
-    vec3 v = view_position(at, eye_depth(at)) - p;
-    float vv = dot(v, v);
-    sum += max(0.0, dot(v, n) - 0.05 * ao_range) * ao_range / (vv + 0.01 * r2) * max(0.0, 1.0 - vv / (4.0 * r2));
-  }
-  return clamp(sum / 8.0, 0.0, 1.0);
-}
 void main() {
   vec3 background = mix(background_bottom, background_top, uv.y);
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  if (depth_at(pixel) >= 1.0) {
-    color = vec4(background, 1.0);
-    return;
-  }
   vec4 ag = texelFetch(albedo_tex, pixel, 0), nf = texelFetch(normal_tex, pixel, 0);
-  if (nf.w >= 1.0) {  // the ground where it has faded out
+  if (depth_at(pixel) >= 1.0 || nf.w >= 1.0) {  // nothing drawn, or the ground faded out
     color = vec4(background, 1.0);
     return;
   }
-  vec3 n = normalize(2.0 * nf.xyz - 1.0);
+  vec3 n = view_normal(nf);
   vec3 p = view_position(pixel, eye_depth(pixel));
   vec3 albedo = ag.rgb * ag.rgb;
   float lit = lit_fraction(p, n);
@@ -210,7 +226,7 @@ void main() {
   float spec = ag.a * pow(max(dot(n, h), 0.0), 48.0) * lit;
   vec3 c = albedo * (vec3(1.0, 0.97, 0.92) * 1.05 * diffuse + ambient) + vec3(spec);
 #if AMBIENT_OCCLUSION
-  c *= 1.0 - 0.8 * occlusion(pixel, p, n);
+  c *= texture(occlusion_tex, uv).r;
 #endif
   c = c / (1.0 + 0.15 * c);
   c = sqrt(c);

@@ -19,10 +19,13 @@ extern const char* const kSphereShadowFragment;
 extern const char* const kMeshVertex;
 extern const char* const kMeshFragment;
 extern const char* const kDepthOnlyFragment;
-// Full-screen pass: lighting, shadows, ambient occlusion, background, tone and gamma. SHADOWS
-// and AMBIENT_OCCLUSION are preprocessor switches (0 or 1) put after the #version line, because
-// llvmpipe runs both sides of a branch on a uniform under a mask: only leaving code out saves it.
+// Full-screen passes (one triangle): ambient occlusion at half resolution, then lighting,
+// shadows, background, tone and gamma. Both get kScreenFunctions after their #version line, and
+// the lighting pass the preprocessor switches SHADOWS and AMBIENT_OCCLUSION (0 or 1): llvmpipe
+// runs both sides of a branch on a uniform under a mask, so only leaving code out saves it.
 extern const char* const kCompositeVertex;
+extern const char* const kScreenFunctions;
+extern const char* const kOcclusionFragment;
 extern const char* const kCompositeFragment;
 
 }  // namespace firn::viz::shaders
