@@ -54,8 +54,8 @@ void main() {
   float h = b * b - (dot(center_view, center_view) - radius * radius);
   if (h < 0.0) discard;
   vec3 hit = (b - sqrt(h)) * dir;
-  vec4 clip = projection * vec4(hit, 1.0);
-  gl_FragDepth = 0.5 * clip.z / clip.w + 0.5;
+  // Window depth of the hit: the projection's z and w rows applied to it (w = -z).
+  gl_FragDepth = 0.5 * (projection[2][2] * hit.z + projection[3][2]) / -hit.z + 0.5;
   vec3 albedo = base_color;
   if (use_scalar == 1) {
     float u = clamp((value - scalar_range.x) / max(scalar_range.y - scalar_range.x, 1e-30), 0.0, 1.0);
@@ -223,7 +223,8 @@ void main() {
   float diffuse = max(dot(n, light_dir_view), 0.0) * lit;
   vec3 ambient = mix(vec3(0.16, 0.15, 0.14), vec3(0.30, 0.34, 0.42), 0.5 + 0.5 * dot(n, up_view));
   vec3 h = normalize(light_dir_view + normalize(-p));
-  float spec = ag.a * pow(max(dot(n, h), 0.0), 48.0) * lit;
+  float s1 = max(dot(n, h), 0.0), s3 = s1 * s1 * s1, s6 = s3 * s3, s12 = s6 * s6, s24 = s12 * s12;
+  float spec = ag.a * s24 * s24 * lit;  // (n . h)^48 by multiplications, cheaper than pow()
   vec3 c = albedo * (vec3(1.0, 0.97, 0.92) * 1.05 * diffuse + ambient) + vec3(spec);
 #if AMBIENT_OCCLUSION
   c *= texture(occlusion_tex, uv).r;
