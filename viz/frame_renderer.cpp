@@ -314,7 +314,6 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
   c.set("up_view", up_view.data());
   c.set("view_to_shadow", view_to_shadow);
   c.set("shadow_bias", 2.0f * shadow_texel);
-  c.set("shadow_texel", 1.0f / float(shadow_size));
   c.set("background_top", s.background_top.data());
   c.set("background_bottom", s.background_bottom.data());
   gl.glDrawArrays(GL_TRIANGLES, 0, 3);

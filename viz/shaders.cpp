@@ -179,7 +179,7 @@ void main() {
 )";
 
 // Lighting in view space: a key light with a shadow map looked up with percentage-closer
-// filtering (Reeves et al. 1987) and a normal-offset bias, a hemisphere ambient term, a
+// filtering (Reeves et al. 1987; one bilinear comparison) and a normal-offset bias, a hemisphere ambient term, a
 // Blinn-Phong highlight and the occlusion pass's result. Then a mild Reinhard-style tone curve.
 // Colours go to linear light and back with gamma 2 (squares and square roots: far cheaper than
 // pow on llvmpipe, and close to sRGB's 2.2).
@@ -191,7 +191,6 @@ uniform vec3 light_dir_view;     // towards the light
 uniform vec3 up_view;
 uniform mat4 view_to_shadow;     // view space -> shadow map [0,1]^3
 uniform float shadow_bias;       // normal offset (m)
-uniform float shadow_texel;      // one shadow-map texel in [0, 1]
 uniform vec3 background_top, background_bottom;
 out vec4 color;
 float lit_fraction(vec3 p, vec3 n) {
@@ -200,13 +199,8 @@ float lit_fraction(vec3 p, vec3 n) {
 #endif
   vec4 s = view_to_shadow * vec4(p + n * shadow_bias, 1.0);
   if (any(lessThan(s.xyz, vec3(0.0))) || any(greaterThan(s.xyz, vec3(1.0)))) return 1.0;
-  // Four bilinear comparisons half a texel apart: a 3x3-texel tent filter.
-  float sum = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    vec2 offset = (vec2(i & 1, i >> 1) - 0.5) * shadow_texel;
-    sum += texture(shadow_map, vec3(s.xy + offset, s.z - 2e-4));
-  }
-  return 0.25 * sum;
+  // One bilinear comparison: the 2x2 texels around the point, weighted.
+  return texture(shadow_map, vec3(s.xy, s.z - 2e-4));
 }
 void main() {
   vec3 background = mix(background_bottom, background_top, uv.y);
