@@ -3,8 +3,9 @@
 Usage: python3 render_outputs_test.py FIRN REPO_ROOT SCRATCH_DIR TEST
 Runs the snowball_pair scene at preview resolution, shortened and at 320x180, and checks that
 every particle frame has its PNG, that video.mp4 is H.264/yuv420p with one video frame per
-output frame (ffprobe), that `--render none` draws nothing, and that `firn render` re-renders a
-finished run from its .vtp files with other [render] settings (and refuses non-render keys).
+output frame (ffprobe), that `--render none` draws nothing, that `firn render` re-renders a
+finished run from its .vtp files with other [render] settings (and refuses non-render keys), and
+that without a working EGL the run falls back to OSMesa.
 """
 import glob
 import os
@@ -17,8 +18,8 @@ SCENE = os.path.join(ROOT, "scenes", "snowball_pair.toml")
 SMALL = ["--preview", "--set", "simulation.end_time=2 ms", "--set", "render.width=320", "--set", "render.height=180"]
 
 
-def run(args):
-    return subprocess.run([FIRN] + args, capture_output=True, text=True)
+def run(args, env=None):
+    return subprocess.run([FIRN] + args, capture_output=True, text=True, env=env)
 
 
 def check(cond, message):
@@ -89,6 +90,17 @@ def test_rerender():
     check(len(frames) == len(glob.glob(os.path.join(out, "particles", "*.vtp"))), "firn render skipped frames")
     r = run(["render", out, "--set", "simulation.dx=0.001"])
     check(r.returncode == 2 and "render." in r.stderr, f"a non-render --set: {r.returncode} {r.stderr}")
+
+
+def test_fallback():
+    # glvnd with no EGL vendor: EGL fails, and without --gl the run falls back to OSMesa.
+    env = dict(os.environ, __EGL_VENDOR_LIBRARY_FILENAMES="/nonexistent/egl_vendor.json")
+    out = fresh("fallback")
+    r = run(["run", SCENE, "--out", out, "--render", "spheres"] + SMALL, env)
+    check(r.returncode == 0 and "osmesa" in r.stdout, f"no fallback to OSMesa: {r.returncode} {r.stdout} {r.stderr}")
+    check(len(glob.glob(os.path.join(out, "frames", "*.png"))) > 1, "no frames from OSMesa")
+    r = run(["run", SCENE, "--out", fresh("fallback_egl"), "--render", "spheres", "--gl", "egl"] + SMALL, env)
+    check(r.returncode == 2 and "EGL" in r.stderr and r.stderr.count("\n") == 1, f"--gl egl without EGL: {r.stderr}")
 
 
 os.makedirs(SCRATCH, exist_ok=True)
