@@ -28,7 +28,9 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 template <class T, class Backend>
 FrameDescription describe_frame(const Simulation<T, Backend>& sim, const ParticleView<T>& view, int frame,
                                 const std::vector<Collider<double>>& colliders) {
-  FrameDescription f{frame, sim.time()};
+  FrameDescription f;
+  f.frame = frame;
+  f.time = sim.time();
   if constexpr (std::is_same_v<T, float>) f.particles_float = &view;
   else f.particles_double = &view;
   std::size_t begin = 0;
