@@ -1,6 +1,7 @@
 // firn render OUTDIR [--render spheres] [--video] [--set render.KEY=VALUE]... [--gl egl|osmesa]
 // Re-renders a finished run from OUTDIR/particles/NNNNN.vtp and OUTDIR/scene.resolved.toml, with
-// the [render] settings changed by --set, into OUTDIR/frames (and OUTDIR/video.mp4).
+// the [render] settings (and materials' colours) changed by --set, into OUTDIR/frames (and
+// OUTDIR/video.mp4).
 #include <dirent.h>
 
 #include <algorithm>
@@ -49,7 +50,8 @@ void add_render_command(CLI::App& app) {
   c->add_option("--render", o->render, "style: spheres")->check(CLI::IsMember({"spheres", "surface"}))
       ->capture_default_str();
   c->add_flag("--video", o->video, "encode the frames to video.mp4");
-  c->add_option("--set", o->sets, "override a render key, e.g. --set render.color_by=speed (repeatable)");
+  c->add_option("--set", o->sets,
+                "override a render key or a material's colour, e.g. --set render.color_by=speed (repeatable)");
   c->add_option("--gl", o->gl, "OpenGL context: egl or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
   c->callback([o]() {
     if (o->render == "surface") {
@@ -57,9 +59,16 @@ void add_render_command(CLI::App& app) {
       set_exit_status(2);
       return;
     }
+    // Only what changes the picture, not the run: [render] keys and the materials' colours.
+    auto drawing_only = [](const std::string& set) {
+      const std::string key = set.substr(0, set.find('='));
+      return key.rfind("render.", 0) == 0 ||
+             (key.rfind("materials.", 0) == 0 && key.size() > 16 && key.compare(key.size() - 6, 6, ".color") == 0);
+    };
     for (const std::string& s : o->sets)
-      if (s.rfind("render.", 0) != 0) {
-        std::fprintf(stderr, "firn render: --set %s: only render.KEY can change after a run\n", s.c_str());
+      if (!drawing_only(s)) {
+        std::fprintf(stderr, "firn render: --set %s: only render.KEY and materials.NAME.color can change after a run\n",
+                     s.c_str());
         set_exit_status(2);
         return;
       }

@@ -88,6 +88,14 @@ def test_rerender():
         check(f.read() != by_material, "the re-rendered frame is unchanged")
     frames = glob.glob(os.path.join(out, "frames", "*.png"))
     check(len(frames) == len(glob.glob(os.path.join(out, "particles", "*.vtp"))), "firn render skipped frames")
+    small = ["--set", "render.width=160", "--set", "render.height=90", "--set", "render.cutaway=true"]
+    frames = []
+    for colour in [[], ["--set", "materials.core.color=[0.2, 0.8, 0.2]"]]:
+        r = run(["render", out] + small + colour)
+        check(r.returncode == 0, f"firn render {colour} exited {r.returncode}: {r.stderr}")
+        with open(first, "rb") as f:
+            frames.append(f.read())
+    check(frames[0] != frames[1], "a material's colour set by firn render did not change the frame")
     r = run(["render", out, "--set", "simulation.dx=0.001"])
     check(r.returncode == 2 and "render." in r.stderr, f"a non-render --set: {r.returncode} {r.stderr}")
 
