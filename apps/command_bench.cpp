@@ -8,6 +8,7 @@
 #include <string>
 
 #include "apps/commands.hpp"
+#include "apps/run_rendering.hpp"
 #include "engine/reference_problems.hpp"
 #include "kernels/backend/openmp.hpp"
 
@@ -65,6 +66,7 @@ void add_bench_command(CLI::App& app) {
     if (opts->precision == "float") bench_step<float>(*opts);
     else bench_step<double>(*opts);
   });
+  add_bench_render_command(*bench);
 }
 
 }  // namespace firn::app
