@@ -51,6 +51,24 @@ struct Collider {
     return d;
   }
 
+  // A world box holding the solid at its pose (a plane's is unbounded): a rotated box's corners,
+  // a cylinder's or tire's rims, lo[d] = c[d] - e[d], hi[d] = c[d] + e[d].
+  FIRN_HD void bounds(T lo[3], T hi[3]) const {
+    for (int d = 0; d < 3; ++d) {
+      const T* row = rotation + 3 * d;  // world axis d in body coordinates
+      T e = T(INFINITY);
+      if (shape == ColliderShape::box) {
+        e = std::fabs(row[0]) * half[0] + std::fabs(row[1]) * half[1] + std::fabs(row[2]) * half[2];
+      } else if (shape != ColliderShape::plane) {  // disc of radius r across the body z axis, half length h along it
+        const T r = shape == ColliderShape::tire ? tire.radius : radius;
+        const T h = shape == ColliderShape::tire ? T(0.5) * tire.width : half[2];
+        e = std::fabs(row[2]) * h + r * std::sqrt(std::fmax(T(0), T(1) - row[2] * row[2]));
+      }
+      lo[d] = center[d] - e;
+      hi[d] = center[d] + e;
+    }
+  }
+
   // The rigid body's velocity at x: v + omega x (x - c).
   FIRN_HD void velocity_at(const T x[3], T out[3]) const {
     const T r[3] = {x[0] - center[0], x[1] - center[1], x[2] - center[2]};

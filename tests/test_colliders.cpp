@@ -138,3 +138,33 @@ TEST(ColliderReaction, ALoadedAxleAcceleratesUnderItsNetForce) {
 
 }  // namespace
 }  // namespace firn
+
+namespace firn {
+namespace {
+
+// The box that holds a collider: a tire's rims and width, a turned box's corners, a plane unbounded.
+TEST(Colliders, BoundsHoldTheSolid) {
+  Collider<double> tire;
+  tire.shape = ColliderShape::tire;
+  tire.tire.radius = 0.2, tire.tire.width = 0.1;
+  tire.center[1] = 0.3;
+  double lo[3], hi[3];
+  tire.bounds(lo, hi);
+  EXPECT_NEAR(lo[0], -0.2, 1e-15);
+  EXPECT_NEAR(hi[1], 0.5, 1e-15);
+  EXPECT_NEAR(hi[2], 0.05, 1e-15);
+  Collider<double> box;  // half extents (1, 0.5, 0.5) turned 90 degrees about z
+  box.shape = ColliderShape::box;
+  box.half[0] = 1, box.half[1] = box.half[2] = 0.5;
+  const double r[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+  for (int i = 0; i < 9; ++i) box.rotation[i] = r[i];
+  box.bounds(lo, hi);
+  EXPECT_NEAR(hi[0], 0.5, 1e-15);
+  EXPECT_NEAR(hi[1], 1, 1e-15);
+  Collider<double> plane;
+  plane.bounds(lo, hi);
+  EXPECT_TRUE(std::isinf(hi[1]));
+}
+
+}  // namespace
+}  // namespace firn

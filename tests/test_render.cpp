@@ -115,7 +115,7 @@ struct GoldenScene {
       ColliderSpec box;
       box.kind = ColliderSpec::Kind::box;
       box.min = {0.24, 0, 0.0}, box.max = {0.3, 0.12, 0.2};
-      scene.colliders.push_back(mesh_signed_distance(collider_sdf(collider_body(box).collider), settings.domain_min,
+      scene.colliders.push_back(mesh_signed_distance(collider_solid(collider_body(box).collider).distance, settings.domain_min,
                                                      settings.domain_max, 48));
     }
   }
@@ -299,7 +299,7 @@ TEST(SdfMesh, ColliderBoxCutToTheDomainIsClosed) {
   plane.kind = ColliderSpec::Kind::plane;
   plane.point = {0.6, 0, 0}, plane.normal = {-1, 0, 0};
   const Vec3 lo = {0, 0, 0}, hi = {1, 1, 1};
-  const TriangleMesh mesh = mesh_signed_distance(clip_to_box(collider_sdf(collider_body(plane).collider), lo, hi),
+  const TriangleMesh mesh = mesh_signed_distance(clip_to_box(collider_solid(collider_body(plane).collider).distance, lo, hi),
                                                  {-0.1, -0.1, -0.1}, {1.1, 1.1, 1.1}, 24);
   Vec3 min = {1e9, 1e9, 1e9}, max = {-1e9, -1e9, -1e9};
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v)

@@ -2,8 +2,11 @@
 
 namespace firn::viz {
 
-SignedDistance collider_sdf(const Collider<double>& collider) {
-  return [collider](const Vec3& x, Vec3& normal) { return collider.distance(x.data(), normal.data()); };
+ColliderSolid collider_solid(const Collider<double>& collider) {
+  ColliderSolid s;
+  s.distance = [collider](const Vec3& x, Vec3& normal) { return collider.distance(x.data(), normal.data()); };
+  collider.bounds(s.lo.data(), s.hi.data());
+  return s;
 }
 
 }  // namespace firn::viz

@@ -1,4 +1,5 @@
-// The one place in viz/ that knows the engine's collider type: its signed distance at its pose.
+// The one place in viz/ that knows the engine's collider type: its signed distance at its pose,
+// and a box that holds it.
 #pragma once
 
 #include "kernels/colliders.hpp"
@@ -6,6 +7,11 @@
 
 namespace firn::viz {
 
-SignedDistance collider_sdf(const Collider<double>& collider);
+struct ColliderSolid {
+  SignedDistance distance;
+  Vec3 lo, hi;  // a box holding the solid (infinite sides for a half-space)
+};
+
+ColliderSolid collider_solid(const Collider<double>& collider);
 
 }  // namespace firn::viz

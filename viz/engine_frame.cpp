@@ -30,7 +30,7 @@ RenderFrame engine_frame(const FrameDescription& f, const std::string& color_by,
   else take_particles(*f.particles_double, color_by, field_storage, r);
   r.materials = f.materials;
   if (f.colliders)
-    for (const Collider<double>& c : *f.colliders) r.colliders.push_back(collider_sdf(c));
+    for (const Collider<double>& c : *f.colliders) r.colliders.push_back(collider_solid(c));
   return r;
 }
 

@@ -10,7 +10,7 @@
 namespace firn::viz {
 namespace {
 
-constexpr int kColliderMeshCells = 64;  // along the domain's longest side
+constexpr int kColliderMeshCells = 64;  // along the longest side of a collider's box
 
 template <class T>
 void add_positions(const PositionColumns& p, Bounds& b) {
@@ -49,8 +49,8 @@ void FramePipeline::add(const RenderFrame& frame) {
   if (!camera_) {
     auto solid = [&](const Vec3& x) {
       Vec3 n;
-      for (const SignedDistance& sdf : frame.colliders)
-        if (sdf(x, n) < 0) return true;
+      for (const ColliderSolid& c : frame.colliders)
+        if (c.distance(x, n) < 0) return true;
       return false;
     };
     camera_ = frame_camera(s, position_bounds(frame.positions), solid);
@@ -85,11 +85,16 @@ void FramePipeline::add(const RenderFrame& frame) {
     legend.names = s.material_names;
     legend.colors = s.material_colors;
   }
-  // Colliders as solids cut to the domain, meshed over a slightly larger box so the cut faces close.
-  const Vec3 margin = (2.0 / kColliderMeshCells) * (s.domain_max - s.domain_min);
-  for (const SignedDistance& sdf : frame.colliders)
-    scene.colliders.push_back(mesh_signed_distance(clip_to_box(sdf, s.domain_min, s.domain_max), s.domain_min - margin,
-                                                   s.domain_max + margin, kColliderMeshCells));
+  // Colliders as solids cut to the domain, each meshed over its own box within the domain (so a
+  // small collider gets fine cells), enlarged by two cells so the cut faces close.
+  for (const ColliderSolid& c : frame.colliders) {
+    Vec3 lo, hi;
+    for (std::size_t d = 0; d < 3; ++d) lo[d] = std::max(c.lo[d], s.domain_min[d]), hi[d] = std::min(c.hi[d], s.domain_max[d]);
+    if (!(lo[0] < hi[0] && lo[1] < hi[1] && lo[2] < hi[2])) continue;  // outside the domain
+    const Vec3 margin = (2.0 / kColliderMeshCells) * (hi - lo);
+    scene.colliders.push_back(mesh_signed_distance(clip_to_box(c.distance, s.domain_min, s.domain_max), lo - margin,
+                                                   hi + margin, kColliderMeshCells));
+  }
 
   Image image = renderer_->render(scene, *camera_);
   if (s.legend) {

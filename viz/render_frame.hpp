@@ -6,7 +6,7 @@
 
 #include "engine/scene/frame_description.hpp"
 #include "viz/frame_renderer.hpp"
-#include "viz/sdf_mesh.hpp"
+#include "viz/collider_sdf.hpp"
 
 namespace firn::viz {
 
@@ -16,7 +16,7 @@ struct RenderFrame {
   PositionColumns positions;
   std::vector<MaterialSpan> materials;  // consecutive particles of one material
   const float* field = nullptr;         // the colour field, one value per particle; null: by material
-  std::vector<SignedDistance> colliders;
+  std::vector<ColliderSolid> colliders;
 };
 
 }  // namespace firn::viz

@@ -58,7 +58,7 @@ RenderFrame VtpFrame::render_frame() const {
   r.positions.count = x_[0].size();
   r.materials = materials_;
   r.field = field_.empty() ? nullptr : field_.data();
-  for (const Collider<double>& c : scene_colliders_at(scene_, time_)) r.colliders.push_back(collider_sdf(c));
+  for (const Collider<double>& c : scene_colliders_at(scene_, time_)) r.colliders.push_back(collider_solid(c));
   return r;
 }
 
