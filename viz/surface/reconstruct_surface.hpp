@@ -11,6 +11,7 @@
 //   firn::surface::write_ply("meshes/00012.ply", mesh);
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -53,7 +54,9 @@ SurfaceMesh reconstruct_surface(const ParticleView<T>& particles, const SurfaceP
 
   SurfaceMesh mesh;
   {
-    const FieldGrid grid = compute_scalar_field(particles, h, params.kernel_radius * h, params.particle_radius, backend);
+    const double kernel_radius = std::min(params.kernel_radius * std::max(h, largest_particle_spacing(particles, backend)),
+                                          kMaxKernelRadius * h);
+    const FieldGrid grid = compute_scalar_field(particles, h, kernel_radius, params.particle_radius, backend);
     lap(time.field);
     extract_isosurface(grid, mesh, backend);
   }  // the field grid is released here

@@ -135,6 +135,15 @@ BinnedParticles<T> bin_particles(const ParticleView<T>& particles, const FieldGr
 
 }  // namespace detail
 
+// The largest rest spacing cbrt(vol0) of the particles (m).
+template <class T, class Backend>
+double largest_particle_spacing(const ParticleView<T>& particles, const Backend& backend) {
+  const T largest_volume = backend.parallel_reduce(
+      "surface_largest_volume", particles.n, T(0), [&](std::size_t p, T& v) { v = std::max(v, particles.vol0[p]); },
+      [](T& a, const T& b) { a = std::max(a, b); });
+  return std::cbrt(double(largest_volume));
+}
+
 // Samples phi and the material coordinates on the sparse grid. h and R in metres.
 template <class T, class Backend>
 FieldGrid compute_scalar_field(const ParticleView<T>& particles, double h, double kernel_radius,

@@ -13,7 +13,9 @@ struct SurfaceParams {
   // Field (Zhu and Bridson 2005; thesis Eq. 4.10-4.14).
   double simulation_dx = 0;       // the simulation grid spacing (m); must be set
   double grid_refinement = 2;     // h = simulation_dx / grid_refinement (the thesis: twice as fine)
-  double kernel_radius = 2;       // R in units of h; at most 6 (the sparse grid's block size bounds it)
+  double kernel_radius = 2;       // R in units of max(h, largest particle spacing cbrt(vol0)), so the
+                                  // kernel always spans a few particles; capped at 6h (the sparse
+                                  // grid's block size bounds it)
   double particle_radius = 0.5;   // r_i in units of the particle's rest spacing cbrt(vol0_i): half
                                   // of it, the radius of a particle that fills its own cell
 
