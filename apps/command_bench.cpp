@@ -2,7 +2,8 @@
 // Times the step loop alone (setup excluded) and prints particles, steps,
 // particle_steps_per_second and state_hash, plus threads, seconds and memory.
 // firn bench surface [--particles N] [--threads N] [--repeats N]
-// Times the snow surface reconstruction of a synthetic snow block; prints particles_per_second.
+// Times the snow surface reconstruction of a synthetic snow block; prints particles_per_second and
+// checks that the mesh is a closed manifold (outside the timing).
 #include <algorithm>
 #include <chrono>
 #include <cinttypes>
@@ -17,6 +18,7 @@
 #include "engine/particle_storage.hpp"
 #include "engine/reference_problems.hpp"
 #include "kernels/backend/openmp.hpp"
+#include "viz/surface/mesh_topology.hpp"
 #include "viz/surface/reconstruct_surface.hpp"
 
 namespace firn::app {
@@ -93,8 +95,11 @@ void bench_surface(const BenchSurfaceOptions& o) {
   using Timings = surface::SurfaceTimings;
   const double surface_seconds = median([](const Timings& t) { return t.total() - t.crystals; });
   const double all_seconds = median([](const Timings& t) { return t.total(); });
+  const surface::MeshTopology topology = surface::analyse_topology(mesh.triangles, mesh.vertex_count());
   std::printf("particles %ld\nthreads %d\nrepeats %d\nvertices %zu\ntriangles %zu\ncrystals %zu\n", o.particles,
               omp.threads(), o.repeats, mesh.vertex_count(), mesh.triangle_count(), mesh.crystals.size());
+  std::printf("closed_manifold %d\neuler_characteristic %ld\n", int(topology.closed_manifold()),
+              topology.euler_characteristic());
   std::printf("field_seconds %.4f\nmarching_seconds %.4f\nsmoothing_seconds %.4f\nnoise_normals_seconds %.4f\n"
               "crystals_seconds %.4f\n",
               median([](const Timings& t) { return t.field; }), median([](const Timings& t) { return t.marching; }),
