@@ -33,8 +33,8 @@ struct SurfaceParams {
   // Hexagonal surface hoar crystals on material-space sites (a jittered lattice of spacing
   // crystal_spacing h; a site carries a crystal with probability crystal_probability).
   bool crystals = true;
-  double crystal_spacing = 2.5;     // in units of h
-  double crystal_probability = 0.35;
+  double crystal_spacing = 1.5;     // in units of h
+  double crystal_probability = 0.5;
   double crystal_radius = 0.35;     // largest hexagon circumradius, in units of h
   double crystal_height = 0.12;     // largest prism height, in units of h
   double crystal_tilt = 0.5;        // largest tilt of the prism axis from the normal (radians)
