@@ -121,7 +121,9 @@ void extract_isosurface(const FieldGrid& grid, SurfaceMesh& mesh, const Backend&
         grid.block_coords(grid.active_blocks[slot], b);
         long first[3];
         for (int d = 0; d < 3; ++d) first[d] = grid.origin[d] + (long(b[d]) << kBlockShift);
-        // Index of the vertex on edge (node (lx, ly, lz), direction d).
+        // Index of the vertex on edge (node (lx, ly, lz), direction d). Its owner node is always in an
+        // active block: a crossed edge has a node within R of a particle, and every block within one
+        // of that particle's block is active (scalar_field.hpp).
         auto vertex_index = [&](int lx, int ly, int lz, int d) {
           int owner, node;
           hood.locate(lx, ly, lz, owner, node);

@@ -5,10 +5,15 @@
 // parallel stage on the engine's backend. Deterministic: the same particles give the same mesh,
 // bit for bit, for any thread count.
 //
+//   sim.enable(firn::Attribute::x0);   // once, before the first step: x0 = the rest positions
+//   ...
 //   firn::surface::SurfaceParams params;
 //   params.simulation_dx = sim.config().dx;
 //   const SurfaceMesh mesh = firn::surface::reconstruct_surface(sim.particles(), params, backend);
 //   firn::surface::write_ply("meshes/00012.ply", mesh);
+//
+// Without x0 the current positions stand in for the material coordinates: the mesh is the same,
+// but the noise and the crystals then swim through the snow as it moves.
 #pragma once
 
 #include <algorithm>

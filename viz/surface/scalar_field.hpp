@@ -14,7 +14,8 @@
 // weights into its own nodes only: no two threads write the same node, and every node sums its
 // particles in the same order whatever the thread count, so the field is bitwise reproducible.
 // Since R < 8h, a particle reaches only nodes of its own and neighbouring blocks, and nodes of
-// inactive blocks have no particle within R: they are outside.
+// inactive blocks have no particle within R: they are outside. The dense block map costs 9 bytes
+// per 8^3 nodes of the particles' bounding box (at h = 1 mm, a 1 m box: 18 MB).
 #pragma once
 
 #include <algorithm>
@@ -157,6 +158,9 @@ FieldGrid compute_scalar_field(const ParticleView<T>& particles, double h, doubl
   if (particles.n == 0) return grid;
 
   const detail::Bounds<T> bounds = detail::particle_bounds(particles, backend);
+  for (int d = 0; d < 3; ++d)
+    if (!std::isfinite(bounds.lo[d]) || !std::isfinite(bounds.hi[d]))
+      throw std::invalid_argument("surface: a particle position is not finite");
   for (int d = 0; d < 3; ++d) {
     // One block of margin on each side: particle bins lie in [1, blocks - 2], active blocks in
     // [0, blocks - 1].
