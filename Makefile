@@ -1,10 +1,11 @@
 # Thin entry points; the build itself is CMake (CMakePresets.json).
 #   make deps   install the Debian packages the build needs (idempotent, skips what is present)
-#   make demo   deps + Release build + the known-answer problems, the snowball_pair scene (preview)
-#               and the reference benchmark
+#   make demo   deps + Release build + the known-answer problems, the snowball_pair scene (preview,
+#               rendered to frames/*.png and video.mp4) and the reference benchmark
 #   make test   deps + Release build + the whole test suite
-DEB_PACKAGES := build-essential cmake libeigen3-dev libcli11-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev libstb-dev zlib1g-dev \
-                python3 python3-vtk9 gnuplot-nox
+DEB_PACKAGES := build-essential cmake libeigen3-dev libcli11-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev \
+                python3 python3-vtk9 gnuplot-nox \
+                libegl-dev libgl-dev libosmesa6-dev libegl-mesa0 libgl1-mesa-dri libstb-dev zlib1g-dev ffmpeg
 JOBS ?= $(shell nproc)
 FIRN := build/release/firn
 
@@ -24,7 +25,7 @@ build: deps
 
 demo: build
 	$(FIRN) verify
-	$(FIRN) run scenes/snowball_pair.toml --preview --out out/snowball_pair
+	$(FIRN) run scenes/snowball_pair.toml --preview --render spheres --video --out out/snowball_pair
 	$(FIRN) bench step --problem cube_drop --steps 50
 
 test: build

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/run_rendering.hpp"
 #include "engine/particle_storage.hpp"
 #include "engine/reference_problems.hpp"
 #include "kernels/backend/openmp.hpp"
@@ -142,6 +143,7 @@ void add_bench_command(CLI::App& app) {
   surface->add_option("--repeats", surface_opts->repeats, "timed runs; the medians are printed")
       ->check(CLI::PositiveNumber)->capture_default_str();
   surface->callback([surface_opts]() { bench_surface(*surface_opts); });
+  add_bench_render_command(*bench);
 }
 
 }  // namespace firn::app

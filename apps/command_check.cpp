@@ -55,6 +55,17 @@ void check(const SceneSpec& s) {
               int(std::lround((s.config.domain_max[0] - s.config.domain_min[0]) / s.config.dx)),
               int(std::lround((s.config.domain_max[1] - s.config.domain_min[1]) / s.config.dx)),
               int(std::lround((s.config.domain_max[2] - s.config.domain_min[2]) / s.config.dx)), s.config.dx, blocks);
+  std::printf("colliders %zu\n", sim.collider_count());
+  if (s.tire)
+    std::printf("tire %s, radius %g m, width %g m, tread depth %g m, %d pitches, %s axle, tread speed %g m/s\n",
+                s.tire->tread.c_str(), s.tire->radius, s.tire->width, s.tire->tread_depth, s.tire->pitches,
+                s.tire->loaded ? "loaded" : "fixed", s.tire->speed);
+  if (s.conveyor) {
+    const ConveyorSpec& c = *s.conveyor;
+    std::printf("conveyor ground speed %g m/s, snow %g m deep from x = %g to %g m", c.speed, c.depth, c.outflow, c.inflow);
+    if (s.tire && c.speed > 0) std::printf(", slip ratio %g", (s.tire->speed - c.speed) / c.speed);
+    std::printf("\n");
+  }
   const double dt = sim.next_dt();
   std::printf("dt_first %.4g s\nsteps_estimate %.0f (at the first step's dt)\nframes %d\n", dt, std::ceil(s.end_time / dt),
               int(std::ceil(s.end_time / s.frame_interval - 1e-9)));

@@ -1,5 +1,6 @@
 // firn run SCENE [--out DIR] [--set KEY=VALUE]... [--threads N] [--preview]
 //                [--render none|spheres|surface] [--video] [--mesh] [--gl egl|osmesa]
+// With --render spheres, every output frame is also drawn to frames/NNNNN.png (and video.mp4).
 // Validates the scene (any fault: one line on standard error, exit status 2, nothing written),
 // runs it with progress on a terminal, and writes the outputs of DESIGN.md section 5.
 // Exit status: 0 completed, 1 unstable or failed, 2 bad scene or options, 130 interrupted.
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/run_rendering.hpp"
 #include "engine/scene/scene_run.hpp"
 
 namespace firn::app {
@@ -75,8 +77,13 @@ void add_run_command(CLI::App& app) {
   run->add_flag("--mesh", o->mesh, "write reconstructed surfaces to meshes/NNNNN.ply");
   run->add_option("--gl", o->gl, "OpenGL context: egl or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
   run->callback([o]() {
-    if (o->render != "none" || o->video || o->mesh || !o->gl.empty()) {
-      std::fprintf(stderr, "firn run: rendering (--render, --video, --mesh, --gl) is not built yet; use --render none\n");
+    if (o->render == "surface" || o->mesh) {
+      std::fprintf(stderr, "firn run: surface rendering (--render surface, --mesh) is not built yet; use --render spheres\n");
+      set_exit_status(2);
+      return;
+    }
+    if (o->video && o->render == "none") {
+      std::fprintf(stderr, "firn run: --video needs --render spheres\n");
       set_exit_status(2);
       return;
     }
@@ -92,6 +99,17 @@ void add_run_command(CLI::App& app) {
     options.out_dir = o->out.empty() ? "out/" + scene.spec.name : o->out;
     options.threads = o->threads;
     options.interrupt = &g_interrupted;
+    RunRendering rendering;
+    if (o->render != "none") {
+      try {
+        rendering = start_run_rendering(scene.spec, options.out_dir, o->video, o->gl);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "firn run: cannot render: %s\n", e.what());
+        set_exit_status(2);
+        return;
+      }
+      options.on_frame = rendering.on_frame;
+    }
     ProgressLine progress;
     if (isatty(STDERR_FILENO)) options.progress = std::ref(progress);
     std::signal(SIGINT, on_interrupt);
@@ -110,6 +128,15 @@ void add_run_command(CLI::App& app) {
       return;
     }
     progress.finish();
+    if (rendering.finish) {
+      try {
+        rendering.finish();
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "firn run: writing frames: %s\n", e.what());
+        set_exit_status(1);
+        return;
+      }
+    }
     if (s.status != "ok") {
       std::fprintf(stderr, "firn run: %s: %s (outputs so far in %s)\n", s.status.c_str(), s.error.c_str(),
                    options.out_dir.c_str());
@@ -119,6 +146,9 @@ void add_run_command(CLI::App& app) {
     std::printf("%s: ok, %zu particles, %ld steps, %.1f s (%.3g particle-steps/s on %d threads), outputs in %s\n",
                 scene.spec.name.c_str(), s.particles, s.steps, s.wall_seconds, s.particle_steps_per_second(),
                 s.threads, options.out_dir.c_str());
+    if (rendering.finish)
+      std::printf("frames in %s/frames%s (%s)\n", options.out_dir.c_str(), o->video ? ", video.mp4" : "",
+                  rendering.description.c_str());
   });
 }
 

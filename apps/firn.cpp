@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "apps/commands.hpp"
+#include "apps/run_rendering.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"firn: a Material Point Method engine for snow, rubber tires and rigid bodies"};
@@ -13,6 +14,7 @@ int main(int argc, char** argv) {
   firn::app::add_bench_command(app);
   firn::app::add_verify_command(app);
   firn::app::add_run_command(app);
+  firn::app::add_render_command(app);
   firn::app::add_check_command(app);
   firn::app::add_sweep_command(app);
   firn::app::add_help_command(app);

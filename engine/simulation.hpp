@@ -36,6 +36,7 @@
 #include "kernels/backend/schedule.hpp"
 #include "kernels/block_window.hpp"
 #include "kernels/boundary_conditions.hpp"
+#include "engine/particle_fields.hpp"
 #include "kernels/colliders.hpp"
 #include "kernels/g2p.hpp"
 #include "kernels/grid_update.hpp"
@@ -371,10 +372,7 @@ class Simulation {
   const MaterialInfo& material(int m) const { return materials_[m].info; }
   std::size_t material_count() const { return materials_.size(); }
   // det of the whole deformation gradient F_E F_P of the particle at physical index p.
-  static T total_J(const ParticleView<T>& pv, std::size_t p) {
-    const T J = determinant(load_F(pv, p));
-    return pv.Jp ? J * pv.Jp[p] : J;
-  }
+  static T total_J(const ParticleView<T>& pv, std::size_t p) { return particle_total_J(pv, p); }
   // Material index of the particle at physical index p (valid after prepare()).
   int material_of(std::size_t p) const {
     for (std::size_t m = 0; m < materials_.size(); ++m)

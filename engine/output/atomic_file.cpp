@@ -1,8 +1,11 @@
 #include "engine/output/atomic_file.hpp"
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <sstream>
 #include <stdexcept>
 
 namespace firn {
@@ -30,6 +33,17 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   AtomicFile f(path);
   f.stream() << content;
   f.commit();
+}
+
+void make_directories(const std::string& path) {
+  std::string partial;
+  std::stringstream parts(path);
+  for (std::string part; std::getline(parts, part, '/');) {
+    partial += part + "/";
+    if (part.empty()) continue;
+    if (::mkdir(partial.c_str(), 0755) != 0 && errno != EEXIST)
+      throw std::runtime_error("cannot create " + partial + ": " + std::strerror(errno));
+  }
 }
 
 }  // namespace firn

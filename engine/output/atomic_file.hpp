@@ -23,4 +23,7 @@ class AtomicFile {
 
 void write_file_atomically(const std::string& path, const std::string& content);
 
+// Creates the folder and any missing parents (mkdir -p); throws std::runtime_error on failure.
+void make_directories(const std::string& path);
+
 }  // namespace firn

@@ -49,8 +49,9 @@ double write_footprint(const std::string& stem, const FootprintMap& map, const F
   constexpr int kScale = 6, kGap = 4, kBar = 10;
   const int width = nx * kScale + kGap + kBar, height = nz * kScale;
   std::vector<std::uint8_t> rgb(std::size_t(width) * std::size_t(height) * 3, 255);
-  auto put = [&](int x, int y, const std::array<std::uint8_t, 3>& c) {
-    for (int q = 0; q < 3; ++q) rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(q)] = c[q];
+  auto put = [&](int x, int y, const std::array<float, 3>& c) {
+    for (int q = 0; q < 3; ++q)
+      rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(q)] = std::uint8_t(std::lround(255 * c[q]));
   };
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < nx * kScale; ++x) {

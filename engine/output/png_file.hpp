@@ -1,14 +1,18 @@
-// PNG files through stb_image_write (Debian's libstb-dev), compressed with zlib at level 1
-// (STBIW_ZLIB_COMPRESS): 3-4x faster than stb's own deflate at a similar size (DESIGN.md
-// section 7). Written atomically like every output file.
+// PNG files through stb_image_write (Debian's libstb-dev), deflated by zlib at level 1 in place of
+// stb's own compressor (STBIW_ZLIB_COMPRESS; DESIGN.md section 7: several times faster, files a
+// little larger). The one PNG encoder of firn: footprint maps and rendered frames.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace firn {
 
-// Writes `height` rows of `width` RGB pixels (8 bits each, top row first) to `path`.
+// `height` rows of `width` RGB pixels (8 bits each, top row first), encoded.
+std::vector<unsigned char> encode_png_rgb(int width, int height, const std::uint8_t* rgb);
+
+// The same, written atomically to `path`; throws std::runtime_error on failure.
 void write_png_rgb(const std::string& path, int width, int height, const std::uint8_t* rgb);
 
 }  // namespace firn

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "engine/output/atomic_file.hpp"
+#include "engine/particle_fields.hpp"
 #include "engine/simulation.hpp"
 
 namespace firn {
@@ -55,15 +56,7 @@ void write_particles_vtp(const std::string& path, Simulation<T, Backend>& sim) {
     id[i] = pv.id[p];
     material[i] = sim.material_of(p);
     J[i] = Simulation<T, Backend>::total_J(pv, p);
-    // von Mises stress sqrt(3/2 s:s) of the Cauchy stress sigma = tau / J_E (tau from the last step).
-    Mat3<T> F;
-    for (int q = 0; q < 9; ++q) F.m[q] = pv.F[q][p];
-    const T inv_J = T(1) / determinant(F);
-    const T t[6] = {pv.tau[0][p], pv.tau[1][p], pv.tau[2][p], pv.tau[3][p], pv.tau[4][p], pv.tau[5][p]};
-    const T mean = (t[0] + t[1] + t[2]) / T(3);
-    const T s2 = (t[0] - mean) * (t[0] - mean) + (t[1] - mean) * (t[1] - mean) + (t[2] - mean) * (t[2] - mean) +
-                 T(2) * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5]);
-    vm[i] = std::sqrt(T(1.5) * s2) * inv_J;
+    vm[i] = particle_von_mises(pv, p);
     if (pv.alpha) alpha[i] = pv.alpha[p];
     if (pv.Jp) Jp[i] = pv.Jp[p];
   }

@@ -81,6 +81,15 @@ struct RenderSpec {
   std::string color_by = "material";
   int width = 1280, height = 720;
   int fps = 30;
+  std::string color_map = "auto";  // auto: diverging for J, viridis otherwise
+  std::optional<double> color_min, color_max;
+  std::optional<Point> camera_position, camera_target;  // automatic framing where absent
+  double fov = 0.6108652381980153;                      // vertical, rad (35 degrees)
+  std::optional<Point> light_direction;  // default: from above, over the camera's shoulder
+  bool shadows = true, ambient_occlusion = true, ground = true, legend = true, cutaway = false;
+  std::optional<double> ground_height;  // default: the domain's floor
+  double sphere_scale = 1.2;            // sphere diameter in particle spacings
+  std::vector<std::optional<Point>> material_colors;  // per material ([materials.NAME] color)
 };
 
 struct SceneSpec {

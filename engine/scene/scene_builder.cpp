@@ -97,6 +97,20 @@ ColliderBody ground_body(const ConveyorSpec& c) {
   return ColliderBody(k);
 }
 
+std::vector<Collider<double>> scene_colliders_at(const SceneSpec& scene, double time) {
+  std::vector<ColliderBody> bodies;
+  for (const ColliderSpec& c : scene.colliders) bodies.push_back(collider_body(c));
+  if (scene.tire) bodies.push_back(tire_body(*scene.tire));
+  if (scene.conveyor) bodies.push_back(ground_body(*scene.conveyor));
+  std::vector<Collider<double>> out;
+  for (ColliderBody& b : bodies) {
+    b.motion = ColliderBody::Motion::prescribed;
+    b.advance(time);  // one step of constant motion is exact
+    out.push_back(b.collider);
+  }
+  return out;
+}
+
 void fill_body(const SceneSpec& scene, std::size_t index, std::vector<Point>& positions, std::vector<Point>& velocities) {
   const BodySpec& body = scene.bodies[index];
   Point lo, hi;

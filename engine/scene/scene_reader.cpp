@@ -146,6 +146,20 @@ class TableReader {
     out_.insert_or_assign(key, o);
     return p;
   }
+  std::optional<Point> optional_vec3(const std::string& key) {
+    if (!has(key)) {
+      used_.push_back(key);
+      return std::nullopt;
+    }
+    return vec3(key);
+  }
+  bool boolean(const std::string& key) {
+    const KeySpec& k = spec(key);
+    const toml::node* n = value(k);
+    if (!n->is_boolean()) fail(key, "expected true or false, got " + type_name(*n));
+    out_.insert_or_assign(key, n->as_boolean()->get());
+    return n->as_boolean()->get();
+  }
   // An upper corner `hi` read from `key` must exceed the lower corner read from `lo_key`.
   void require_above(const std::string& key, const Point& hi, const std::string& lo_key, const Point& lo) const {
     for (int d = 0; d < 3; ++d)
@@ -165,13 +179,6 @@ class TableReader {
     const std::string v = choice(key);
     const auto& c = spec(key).choices;
     return int(std::find(c.begin(), c.end(), v) - c.begin());
-  }
-  bool boolean(const std::string& key) {
-    const KeySpec& k = spec(key);
-    const toml::node* n = value(k);
-    if (!n->is_boolean()) fail(key, "expected true or false, got " + type_name(*n));
-    out_.insert_or_assign(key, n->as_boolean()->get());
-    return n->as_boolean()->get();
   }
   std::optional<std::string> text(const std::string& key) {
     const KeySpec& k = spec(key);
@@ -375,7 +382,8 @@ void apply_override(Context& ctx, toml::table& root, const std::string& assignme
   ctx.overrides[key] = assignment;
 }
 
-MaterialInfo read_material(const Context& ctx, const std::string& name, const toml::table& given, toml::table& out) {
+MaterialInfo read_material(const Context& ctx, const std::string& name, const toml::table& given, toml::table& out,
+                           std::optional<Point>& color) {
   const std::string prefix = "materials." + name;
   // Merge the preset's values under the scene's keys.
   toml::table merged = given;
@@ -421,6 +429,10 @@ MaterialInfo read_material(const Context& ctx, const std::string& name, const to
   }
   for (const MaterialParameter& p : find_material_model(info.model)->parameters)
     info.params[p.key] = p.choices.empty() ? r.number(p.key) : double(r.choice_index(p.key));
+  color = r.optional_vec3("color");
+  if (color)
+    for (double c : *color)
+      if (!(c >= 0 && c <= 1)) r.fail("color", "each component must be in [0, 1]");
   r.finish();
   try {  // constraints between parameters (e.g. G2 < G) are the factory's to check
     make_material_model<double>(info);
@@ -530,7 +542,8 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
       const std::string n(name.str());
       if (!node.is_table()) ctx.fail(&node, t.source(), "materials." + n, "expected a table [materials." + n + "]");
       toml::table mo;
-      s.materials.push_back(read_material(ctx, n, *node.as_table(), mo));
+      s.render.material_colors.emplace_back();
+      s.materials.push_back(read_material(ctx, n, *node.as_table(), mo, s.render.material_colors.back()));
       o.insert(n, std::move(mo));
     }
     out.insert("materials", std::move(o));
@@ -707,6 +720,23 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
     s.render.width = int(r.integer("width"));
     s.render.height = int(r.integer("height"));
     s.render.fps = int(r.integer("fps"));
+    s.render.color_map = r.choice("color_map");
+    s.render.color_min = r.optional_number("color_min");
+    s.render.color_max = r.optional_number("color_max");
+    if (s.render.color_min && s.render.color_max && !(*s.render.color_max > *s.render.color_min))
+      r.fail("color_max", "must exceed color_min");
+    s.render.camera_position = r.optional_vec3("camera_position");
+    s.render.camera_target = r.optional_vec3("camera_target");
+    s.render.fov = r.number("fov");
+    s.render.light_direction = r.optional_vec3("light_direction");
+    if (s.render.light_direction == Point{0, 0, 0}) r.fail("light_direction", "must not be zero");
+    s.render.shadows = r.boolean("shadows");
+    s.render.ambient_occlusion = r.boolean("ambient_occlusion");
+    s.render.ground = r.boolean("ground");
+    s.render.ground_height = r.optional_number("ground_height");
+    s.render.legend = r.boolean("legend");
+    s.render.cutaway = r.boolean("cutaway");
+    s.render.sphere_scale = r.number("sphere_scale");
     r.finish();
     out.insert("render", std::move(ro));
   }

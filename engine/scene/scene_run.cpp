@@ -1,15 +1,11 @@
 #include "engine/scene/scene_run.hpp"
 
-#include <sys/stat.h>
-
-#include <cerrno>
 #include <chrono>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <optional>
-#include <sstream>
+#include <type_traits>
 
 #include "engine/output/atomic_file.hpp"
 #include "engine/output/vtp_writer.hpp"
@@ -20,17 +16,6 @@
 namespace firn {
 namespace {
 
-void make_directory(const std::string& path) {
-  std::string partial;
-  std::stringstream parts(path);
-  for (std::string part; std::getline(parts, part, '/');) {
-    partial += part + "/";
-    if (part.empty()) continue;
-    if (::mkdir(partial.c_str(), 0755) != 0 && errno != EEXIST)
-      throw std::runtime_error("cannot create " + partial + ": " + std::strerror(errno));
-  }
-}
-
 std::string frame_name(int frame) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%05d", frame);
@@ -39,6 +24,31 @@ std::string frame_name(int frame) {
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Particles are grouped by material (DESIGN.md section 2, rule 5), so material_of is
+// non-decreasing in the physical index: each material's span ends where a binary search says.
+template <class T, class Backend>
+FrameDescription describe_frame(const Simulation<T, Backend>& sim, const ParticleView<T>& view, int frame,
+                                const std::vector<Collider<double>>& colliders) {
+  FrameDescription f;
+  f.frame = frame;
+  f.time = sim.time();
+  if constexpr (std::is_same_v<T, float>) f.particles_float = &view;
+  else f.particles_double = &view;
+  std::size_t begin = 0;
+  for (int m = 0; m < int(sim.material_count()); ++m) {
+    std::size_t lo = begin, hi = view.n;
+    while (lo < hi) {
+      const std::size_t mid = lo + (hi - lo) / 2;
+      if (sim.material_of(mid) <= m) lo = mid + 1;
+      else hi = mid;
+    }
+    f.materials.push_back({begin, lo, m});
+    begin = lo;
+  }
+  f.colliders = &colliders;
+  return f;
+}
 
 template <class T>
 RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
@@ -59,8 +69,8 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
   summary.threads = omp.threads();
   summary.precision = scene.precision;
 
-  make_directory(options.out_dir + "/particles");
-  if (scene_metrics.writes_footprint()) make_directory(options.out_dir + "/footprint");
+  make_directories(options.out_dir + "/particles");
+  if (scene_metrics.writes_footprint()) make_directories(options.out_dir + "/footprint");
   write_file_atomically(options.out_dir + "/scene.resolved.toml", loaded.resolved_toml);
   std::string metrics =
       "frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,max_speed,min_J" +
@@ -74,6 +84,12 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
     metrics += row + scene_metrics.row(sim, options.out_dir + "/footprint/" + frame_name(frame)) + "\n";
     write_particles_vtp(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
     write_file_atomically(options.out_dir + "/metrics.csv", metrics);
+    if (options.on_frame) {
+      const ParticleView<T> view = sim.particles();
+      std::vector<Collider<double>> colliders;  // where they are now
+      for (std::size_t c = 0; c < sim.collider_count(); ++c) colliders.push_back(sim.collider(int(c)).collider);
+      options.on_frame(describe_frame(sim, view, frame, colliders));
+    }
   };
 
   const int frames = std::max(1, int(std::ceil(scene.end_time / scene.frame_interval - 1e-9)));

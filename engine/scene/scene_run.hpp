@@ -10,6 +10,7 @@
 #include <string>
 
 #include "engine/output/run_summary.hpp"
+#include "engine/scene/frame_description.hpp"
 #include "engine/scene/scene_reader.hpp"
 
 namespace firn {
@@ -26,6 +27,9 @@ struct RunOptions {
   int threads = 0;                                  // 0: all cores
   const std::atomic<bool>* interrupt = nullptr;     // set from a signal handler to stop between steps
   std::function<void(const RunProgress&)> progress;  // called after every step
+  // Called at every output frame after its files are written (e.g. the renderer); an exception
+  // from it ends the run as "failed".
+  std::function<void(const FrameDescription&)> on_frame;
 };
 
 // Builds the scene (throws SceneError before anything is written if a body has no particles),

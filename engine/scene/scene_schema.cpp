@@ -75,6 +75,8 @@ std::vector<SectionSpec> build_schema() {
                             {"nu", K::number, Q::dimensionless, "", false, "Poisson's ratio", -1, 0.5, true, {}, {}, true},
                             {"K", K::number, Q::pressure, "", false, "bulk modulus", 0, kInf, true},
                             {"G", K::number, Q::pressure, "", false, "shear modulus", 0, kInf, true},
+                            {"color", K::vector3, Q::dimensionless, "", false,
+                             "render colour [r, g, b], each in [0, 1] (default: a built-in palette)"},
                         }};
   for (const MaterialModelSpec& m : material_model_specs()) {
     materials.keys[1].choices.push_back(m.name);
@@ -241,6 +243,35 @@ std::vector<SectionSpec> build_schema() {
                    {"width", K::integer, Q::dimensionless, "1280", false, "image width in pixels", 16, 8192},
                    {"height", K::integer, Q::dimensionless, "720", false, "image height in pixels", 16, 8192},
                    {"fps", K::integer, Q::dimensionless, "30", false, "video frames per second", 1, 240},
+                   {"color_map", K::choice, Q::dimensionless, "\"auto\"", false,
+                    "colour map of a field: viridis, diverging (Moreland's cool-warm) or auto (diverging for J, "
+                    "centred on 1; viridis otherwise)", -kInf, kInf, false, {"auto", "viridis", "diverging"}},
+                   {"color_min", K::number, Q::dimensionless, "", false,
+                    "field value at the low end of the colour map, in the field's SI unit (default: the lowest "
+                    "value so far in the run)"},
+                   {"color_max", K::number, Q::dimensionless, "", false,
+                    "field value at the high end of the colour map (default: the highest value so far)"},
+                   {"camera_position", K::vector3, Q::length, "", false,
+                    "camera position (default: in front, right and above, framing the particles at the start)"},
+                   {"camera_target", K::vector3, Q::length, "", false,
+                    "point the camera looks at (default: the centre of the particles at the start)"},
+                   {"fov", K::number, Q::angle, "\"35 deg\"", false, "vertical field of view", 0, 3, true},
+                   {"light_direction", K::vector3, Q::dimensionless, "", false,
+                    "direction the key light travels, need not be unit length (default: down and away from the "
+                    "camera, from over its shoulder)"},
+                   {"shadows", K::boolean, Q::dimensionless, "true", false, "shadow-mapped key light"},
+                   {"ambient_occlusion", K::boolean, Q::dimensionless, "true", false,
+                    "screen-space ambient occlusion, so particles read as a volume"},
+                   {"ground", K::boolean, Q::dimensionless, "true", false, "draw a ground plane"},
+                   {"ground_height", K::number, Q::length, "", false,
+                    "height (y) of the ground plane (default: the domain's floor)"},
+                   {"legend", K::boolean, Q::dimensionless, "true", false,
+                    "draw the legend (materials or colour bar) and the time"},
+                   {"cutaway", K::boolean, Q::dimensionless, "false", false,
+                    "hide the particles on the camera's side of the plane through the camera target across the axis "
+                    "nearest the view direction, showing the inside (e.g. a snowball's layers)"},
+                   {"sphere_scale", K::number, Q::dimensionless, "1.2", false,
+                    "sphere diameter in particle spacings (dx / cube root of particles_per_cell)", 0, 10, true},
                }});
   return s;
 }

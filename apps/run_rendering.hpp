@@ -1,0 +1,29 @@
+// The renderer as `firn run` uses it: a frame hook for the run and a finish step, or an error
+// when firn was built without viz/ or no OpenGL context can be made.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+#include "engine/scene/frame_description.hpp"
+#include "engine/scene/scene.hpp"
+
+namespace firn::app {
+
+struct RunRendering {
+  std::function<void(const FrameDescription&)> on_frame;
+  std::function<void()> finish;  // waits for the PNG writer and closes the video
+  std::string description;       // the OpenGL context, e.g. "egl surfaceless: OpenGL 4.5 ..."
+};
+
+// Frames go to OUT_DIR/frames/NNNNN.png, and with `video` to OUT_DIR/video.mp4. `gl`: "egl",
+// "osmesa" or "" (EGL, falling back to OSMesa). Throws std::runtime_error.
+RunRendering start_run_rendering(const SceneSpec& scene, const std::string& out_dir, bool video, const std::string& gl);
+
+// firn render OUTDIR ... and firn bench render ...
+void add_render_command(CLI::App& app);
+void add_bench_render_command(CLI::App& bench);
+
+}  // namespace firn::app

@@ -1,0 +1,104 @@
+#include "viz/frame_pipeline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "viz/color_field.hpp"
+#include "viz/legend.hpp"
+
+namespace firn::viz {
+namespace {
+
+constexpr int kColliderMeshCells = 64;  // along the domain's longest side
+
+template <class T>
+void add_positions(const PositionColumns& p, Bounds& b) {
+  const T* x[3] = {static_cast<const T*>(p.x[0]), static_cast<const T*>(p.x[1]), static_cast<const T*>(p.x[2])};
+  for (std::size_t i = 0; i < p.count; ++i) b.add({double(x[0][i]), double(x[1][i]), double(x[2][i])});
+}
+
+std::string time_caption(double t) {
+  char buf[64];
+  if (t < 1) std::snprintf(buf, sizeof buf, "t = %.3f ms", t * 1e3);
+  else std::snprintf(buf, sizeof buf, "t = %.4f s", t);
+  return buf;
+}
+
+}  // namespace
+
+Bounds position_bounds(const PositionColumns& p) {
+  Bounds b;
+  if (p.doubles) add_positions<double>(p, b);
+  else add_positions<float>(p, b);
+  return b;
+}
+
+FramePipeline::FramePipeline(const RenderSettings& settings, GlApi api, const FrameOutputs& outputs)
+    : settings_(settings), context_(make_gl_context(api)), renderer_(std::make_unique<FrameRenderer>(*context_, settings)) {
+  std::unique_ptr<FfmpegPipe> video;
+  if (!outputs.video_path.empty())
+    video = std::make_unique<FfmpegPipe>(outputs.video_path, settings.width, settings.height, outputs.fps);
+  writer_ = std::make_unique<FrameWriter>(outputs.png_dir, std::move(video));
+}
+
+FramePipeline::~FramePipeline() = default;
+
+void FramePipeline::add(const RenderFrame& frame) {
+  const RenderSettings& s = settings_;
+  if (!camera_) {
+    auto solid = [&](const Vec3& x) {
+      Vec3 n;
+      for (const SignedDistance& sdf : frame.colliders)
+        if (sdf(x, n) < 0) return true;
+      return false;
+    };
+    camera_ = frame_camera(s, position_bounds(frame.positions), solid);
+  }
+
+  FrameScene scene;
+  scene.positions = frame.positions;
+  for (const MaterialSpan& m : frame.materials)
+    scene.ranges.push_back({m.begin, m.end, s.material_colors.at(std::size_t(m.material))});
+  Legend legend;
+  if (frame.field) {
+    const auto [lo, hi] = std::minmax_element(frame.field, frame.field + frame.positions.count);
+    if (frame.positions.count > 0) {
+      field_min_ = field_seen_ ? std::min(field_min_, double(*lo)) : *lo;
+      field_max_ = field_seen_ ? std::max(field_max_, double(*hi)) : *hi;
+      field_seen_ = true;
+    }
+    double a = s.color_min.value_or(field_min_), b = s.color_max.value_or(field_max_);
+    if (s.color_map == ColorMap::diverging && !s.color_min && !s.color_max) {
+      // Symmetric about the field's neutral value: 1 for J, 0 otherwise.
+      const double centre = s.color_by == "J" ? 1 : 0, reach = std::max(std::abs(a - centre), std::abs(b - centre));
+      a = centre - reach, b = centre + reach;
+    }
+    if (!(b > a)) b = a + std::max(1e-12, std::abs(a) * 1e-6);
+    scene.scalar = frame.field;
+    scene.scalar_min = a, scene.scalar_max = b;
+    legend.title = color_field_title(s.color_by);
+    legend.map = s.color_map;
+    legend.min = a, legend.max = b;
+  } else {
+    legend.title = "material";
+    legend.names = s.material_names;
+    legend.colors = s.material_colors;
+  }
+  // Colliders as solids cut to the domain, meshed over a slightly larger box so the cut faces close.
+  const Vec3 margin = (2.0 / kColliderMeshCells) * (s.domain_max - s.domain_min);
+  for (const SignedDistance& sdf : frame.colliders)
+    scene.colliders.push_back(mesh_signed_distance(clip_to_box(sdf, s.domain_min, s.domain_max), s.domain_min - margin,
+                                                   s.domain_max + margin, kColliderMeshCells));
+
+  Image image = renderer_->render(scene, *camera_);
+  if (s.legend) {
+    legend.caption = time_caption(frame.time);
+    draw_legend(image, legend);
+  }
+  writer_->push(frame.frame, std::move(image));
+}
+
+void FramePipeline::finish() { writer_->finish(); }
+
+}  // namespace firn::viz

@@ -1,0 +1,55 @@
+// Draws one frame (DESIGN.md section 7): a shadow-map pass from the key light, then spheres,
+// collider meshes and the ground into a floating-point framebuffer, then a full-screen pass that
+// adds ambient occlusion and the background and writes 8-bit sRGB, read back top row first.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "viz/camera.hpp"
+#include "viz/gl_context.hpp"
+#include "viz/image.hpp"
+#include "viz/render_settings.hpp"
+#include "viz/sdf_mesh.hpp"
+
+namespace firn::viz {
+
+// Particle positions as the engine stores them: three columns of float or double.
+struct PositionColumns {
+  const void* x[3] = {nullptr, nullptr, nullptr};
+  bool doubles = false;
+  std::size_t count = 0;
+};
+
+// A run of consecutive particles drawn in one colour (one material).
+struct ColorRange {
+  std::size_t begin, end;
+  Rgb color;
+};
+
+struct FrameScene {
+  PositionColumns positions;
+  std::vector<ColorRange> ranges;  // colour by material: used when `scalar` is null
+  const float* scalar = nullptr;   // colour field, one value per particle
+  double scalar_min = 0, scalar_max = 1;
+  std::vector<TriangleMesh> colliders;
+};
+
+class FrameRenderer {
+ public:
+  FrameRenderer(const GlContext& context, const RenderSettings& settings);
+  ~FrameRenderer();
+  FrameRenderer(const FrameRenderer&) = delete;
+  FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+  Image render(const FrameScene& scene, const Camera& camera);
+
+ private:
+  struct Resources;
+  const Gl& gl_;
+  RenderSettings settings_;
+  std::unique_ptr<Resources> r_;
+};
+
+}  // namespace firn::viz

@@ -1,0 +1,22 @@
+// One frame as the renderer takes it, from a running simulation (viz/engine_frame.hpp) or from a
+// finished run's .vtp files (viz/vtp_frame.hpp).
+#pragma once
+
+#include <vector>
+
+#include "engine/scene/frame_description.hpp"
+#include "viz/frame_renderer.hpp"
+#include "viz/sdf_mesh.hpp"
+
+namespace firn::viz {
+
+struct RenderFrame {
+  int frame = 0;
+  double time = 0;
+  PositionColumns positions;
+  std::vector<MaterialSpan> materials;  // consecutive particles of one material
+  const float* field = nullptr;         // the colour field, one value per particle; null: by material
+  std::vector<SignedDistance> colliders;
+};
+
+}  // namespace firn::viz

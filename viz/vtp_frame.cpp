@@ -1,0 +1,65 @@
+#include "viz/vtp_frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/scene/scene_builder.hpp"
+#include "viz/collider_sdf.hpp"
+#include "viz/vtp_reader.hpp"
+
+namespace firn::viz {
+
+VtpFrame::VtpFrame(const std::string& path, int frame, const SceneSpec& scene)
+    : frame_(frame), time_(std::min(scene.end_time, frame * scene.frame_interval)), scene_(scene) {
+  const VtpFile f = read_vtp(path);
+  const auto material = f.arrays.find("material");
+  if (material == f.arrays.end()) throw std::runtime_error(path + ": no 'material' array");
+  const int materials = int(scene.materials.size());
+  // Stable counting sort by material, so each material is one run of particles.
+  std::vector<std::size_t> count(std::size_t(materials) + 1, 0);
+  for (double m : material->second.values) {
+    if (m < 0 || m >= materials) throw std::runtime_error(path + ": material index out of the scene's range");
+    ++count[std::size_t(m) + 1];
+  }
+  for (int m = 0; m < materials; ++m) {
+    count[std::size_t(m) + 1] += count[std::size_t(m)];
+    materials_.push_back({count[std::size_t(m)], count[std::size_t(m) + 1], m});
+  }
+  std::vector<std::size_t> order(f.points);
+  for (std::size_t i = 0; i < f.points; ++i) order[count[std::size_t(material->second.values[i])]++] = i;
+
+  for (int d = 0; d < 3; ++d) {
+    x_[d].resize(f.points);
+    for (std::size_t i = 0; i < f.points; ++i) x_[d][i] = f.positions.values[3 * order[i] + std::size_t(d)];
+  }
+  const std::string& by = scene.render.color_by;
+  if (by == "material") return;
+  // The .vtp arrays behind each colour field (engine/output/vtp_writer.hpp).
+  const std::string name = by == "speed" ? "velocity" : by == "stress" ? "von_mises" : by;
+  const auto a = f.arrays.find(name);
+  field_.assign(f.points, 0.0f);
+  if (a == f.arrays.end()) {
+    if (by == "plastic_strain") return;  // no plastic material in this run: zero everywhere
+    throw std::runtime_error(path + ": no '" + name + "' array for color_by = " + by);
+  }
+  for (std::size_t i = 0; i < f.points; ++i) {
+    const double* v = &a->second.values[order[i] * std::size_t(a->second.components)];
+    field_[i] = float(by == "speed" ? std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) : v[0]);
+  }
+}
+
+RenderFrame VtpFrame::render_frame() const {
+  RenderFrame r;
+  r.frame = frame_;
+  r.time = time_;
+  for (int d = 0; d < 3; ++d) r.positions.x[d] = x_[d].data();
+  r.positions.doubles = true;
+  r.positions.count = x_[0].size();
+  r.materials = materials_;
+  r.field = field_.empty() ? nullptr : field_.data();
+  for (const Collider<double>& c : scene_colliders_at(scene_, time_)) r.colliders.push_back(collider_sdf(c));
+  return r;
+}
+
+}  // namespace firn::viz
