@@ -1,16 +1,26 @@
 // firn bench step [--problem NAME] [--steps N] [--threads N] [--precision float|double]
 // Times the step loop alone (setup excluded) and prints particles, steps,
 // particle_steps_per_second and state_hash, plus threads, seconds and memory.
+// firn bench surface [--particles N] [--threads N] [--repeats N]
+// Times the snow surface reconstruction of a synthetic snow block; prints particles_per_second and
+// checks that the mesh is a closed manifold (outside the timing).
+#include <algorithm>
 #include <chrono>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
 #include <map>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "apps/commands.hpp"
 #include "apps/run_rendering.hpp"
+#include "engine/particle_storage.hpp"
 #include "engine/reference_problems.hpp"
 #include "kernels/backend/openmp.hpp"
+#include "viz/surface/mesh_topology.hpp"
+#include "viz/surface/reconstruct_surface.hpp"
 
 namespace firn::app {
 namespace {
@@ -43,6 +53,63 @@ void bench_step(const BenchStepOptions& o) {
   std::printf("particle_steps_per_second %.0f\nstate_hash %016" PRIx64 "\n", rate, sim.state_hash());
 }
 
+struct BenchSurfaceOptions {
+  long particles = 100000;
+  int threads = 0;  // 0: all cores
+  int repeats = 5;
+};
+
+// A synthetic snow block: a jittered lattice at 8 particles per cell of dx = 0.01 m (spacing
+// dx/2, jitter +-dx/8), as wide as deep and as tall as the count needs, rest positions = positions.
+void fill_snow_block(ParticleStorage<float>& storage, long count, double dx) {
+  const double spacing = dx / 2;
+  const long side = std::max(1L, std::lround(std::cbrt(double(count))));
+  storage.enable(Attribute::x0);
+  storage.resize(std::size_t(count));
+  ParticleView<float> pv = storage.view();
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+  for (long p = 0; p < count; ++p) {
+    const long lattice[3] = {p % side, p / (side * side), p / side % side};
+    for (int d = 0; d < 3; ++d) pv.x[d][p] = pv.x0[d][p] = float((lattice[d] + 0.5 + jitter(random)) * spacing);
+    pv.vol0[p] = float(spacing * spacing * spacing);
+  }
+}
+
+void bench_surface(const BenchSurfaceOptions& o) {
+  backend::OpenMP omp;
+  if (o.threads > 0) omp.thread_count = o.threads;
+  surface::SurfaceParams params;
+  params.simulation_dx = 0.01;
+  ParticleStorage<float> storage;
+  fill_snow_block(storage, o.particles, params.simulation_dx);
+  std::vector<surface::SurfaceTimings> runs(std::size_t(o.repeats));
+  surface::SurfaceMesh mesh;
+  for (auto& run : runs) mesh = surface::reconstruct_surface(storage.view(), params, omp, &run);
+  // Medians of each stage and of the total without and with the crystals.
+  auto median = [&runs](auto seconds_of) {
+    std::vector<double> values;
+    for (const auto& run : runs) values.push_back(seconds_of(run));
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+  };
+  using Timings = surface::SurfaceTimings;
+  const double surface_seconds = median([](const Timings& t) { return t.total() - t.crystals; });
+  const double all_seconds = median([](const Timings& t) { return t.total(); });
+  const surface::MeshTopology topology = surface::analyse_topology(mesh.triangles, mesh.vertex_count());
+  std::printf("particles %ld\nthreads %d\nrepeats %d\nvertices %zu\ntriangles %zu\ncrystals %zu\n", o.particles,
+              omp.threads(), o.repeats, mesh.vertex_count(), mesh.triangle_count(), mesh.crystals.size());
+  std::printf("closed_manifold %d\neuler_characteristic %ld\n", int(topology.closed_manifold()),
+              topology.euler_characteristic());
+  std::printf("field_seconds %.4f\nmarching_seconds %.4f\nsmoothing_seconds %.4f\nnoise_normals_seconds %.4f\n"
+              "crystals_seconds %.4f\n",
+              median([](const Timings& t) { return t.field; }), median([](const Timings& t) { return t.marching; }),
+              median([](const Timings& t) { return t.smoothing; }), median([](const Timings& t) { return t.detail; }),
+              median([](const Timings& t) { return t.crystals; }));
+  std::printf("seconds %.4f\nparticles_per_second %.0f\nparticles_per_second_with_crystals %.0f\n", surface_seconds,
+              double(o.particles) / surface_seconds, double(o.particles) / all_seconds);
+}
+
 }  // namespace
 
 int exit_status() { return g_status; }
@@ -66,6 +133,16 @@ void add_bench_command(CLI::App& app) {
     if (opts->precision == "float") bench_step<float>(*opts);
     else bench_step<double>(*opts);
   });
+
+  auto surface_opts = std::make_shared<BenchSurfaceOptions>();
+  CLI::App* surface = bench->add_subcommand("surface", "time the snow surface reconstruction of a synthetic block");
+  surface->add_option("--particles", surface_opts->particles, "particles in the block")->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  surface->add_option("--threads", surface_opts->threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
+  surface->add_option("--repeats", surface_opts->repeats, "timed runs; the medians are printed")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  surface->callback([surface_opts]() { bench_surface(*surface_opts); });
   add_bench_render_command(*bench);
 }
 
