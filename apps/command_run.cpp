@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/run_meshes.hpp"
 #include "apps/run_rendering.hpp"
 #include "engine/scene/scene_run.hpp"
 
@@ -77,8 +78,8 @@ void add_run_command(CLI::App& app) {
   run->add_flag("--mesh", o->mesh, "write reconstructed surfaces to meshes/NNNNN.ply");
   run->add_option("--gl", o->gl, "OpenGL context: egl or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
   run->callback([o]() {
-    if (o->render == "surface" || o->mesh) {
-      std::fprintf(stderr, "firn run: surface rendering (--render surface, --mesh) is not built yet; use --render spheres\n");
+    if (o->render == "surface") {
+      std::fprintf(stderr, "firn run: --render surface is not built yet (--mesh writes the surfaces); use --render spheres\n");
       set_exit_status(2);
       return;
     }
@@ -109,6 +110,15 @@ void add_run_command(CLI::App& app) {
         return;
       }
       options.on_frame = rendering.on_frame;
+    }
+    if (o->mesh) {
+      options.rest_positions = true;  // the surface's noise and crystals are anchored to them
+      const auto draw = options.on_frame;
+      const auto meshes = start_run_meshes(scene.spec, options.out_dir, o->threads);
+      options.on_frame = [draw, meshes](const FrameDescription& f) {
+        if (draw) draw(f);
+        meshes(f);
+      };
     }
     ProgressLine progress;
     if (isatty(STDERR_FILENO)) options.progress = std::ref(progress);
@@ -149,6 +159,7 @@ void add_run_command(CLI::App& app) {
     if (rendering.finish)
       std::printf("frames in %s/frames%s (%s)\n", options.out_dir.c_str(), o->video ? ", video.mp4" : "",
                   rendering.description.c_str());
+    if (o->mesh) std::printf("surfaces in %s/meshes\n", options.out_dir.c_str());
   });
 }
 

@@ -162,6 +162,48 @@ def test_check():
         check(word in r.stdout, f"firn check does not print {word}: {r.stdout}")
 
 
+def read_ply(path):
+    """Vertices and triangles of a binary little-endian PLY as firn writes it."""
+    import struct
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode().splitlines()
+    check(header[1] == "format binary_little_endian 1.0", f"{path}: not binary little-endian")
+    vertices = int([l for l in header if l.startswith("element vertex")][0].split()[2])
+    faces = int([l for l in header if l.startswith("element face")][0].split()[2])
+    floats = len([l for l in header if l.startswith("property float")])
+    at = end + 4 * floats * vertices
+    triangles = []
+    for _ in range(faces):
+        count = data[at]
+        check(count == 3, f"{path}: a face with {count} vertices")
+        triangles.append(struct.unpack_from("<3I", data, at + 1))
+        at += 13
+    check(at == len(data), f"{path}: {len(data) - at} bytes after the faces")
+    return vertices, triangles
+
+
+def test_mesh():
+    # --mesh writes one PLY per frame, each a closed, consistently oriented manifold: every
+    # directed edge appears once and its reverse once.
+    out = fresh("mesh_run")
+    r = run(["run", SCENE, "--preview", "--mesh", "--out", out, "--set", "simulation.end_time=2 ms"])
+    check(r.returncode == 0, f"firn run --mesh exited {r.returncode}: {r.stderr}")
+    frames = sorted(glob.glob(os.path.join(out, "meshes", "*.ply")))
+    check(len(frames) == len(metrics(out)), f"{len(frames)} meshes for {len(metrics(out))} frames")
+    for path in frames:
+        vertices, triangles = read_ply(path)
+        check(len(triangles) > 1000, f"{path}: only {len(triangles)} triangles")
+        edges = {}
+        for a, b, c in triangles:
+            check(max(a, b, c) < vertices, f"{path}: vertex index out of range")
+            for e in ((a, b), (b, c), (c, a)):
+                edges[e] = edges.get(e, 0) + 1
+        check(all(n == 1 for n in edges.values()), f"{path}: an edge used twice the same way (not oriented or not manifold)")
+        check(all((b, a) in edges for a, b in edges), f"{path}: an open edge (the surface is not closed)")
+
+
 os.makedirs(SCRATCH, exist_ok=True)
 globals()["test_" + TEST]()
 print("ok")

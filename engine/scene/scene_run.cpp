@@ -57,6 +57,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
   backend::OpenMP omp;
   if (options.threads > 0) omp.thread_count = options.threads;
   Simulation<T, backend::OpenMP> sim(scene.config, omp);
+  if (options.rest_positions) sim.enable(Attribute::x0);
   const BuiltScene built = build_scene(scene, sim);
   std::optional<Conveyor> conveyor;
   if (scene.conveyor) conveyor.emplace(scene, *scene.conveyor);

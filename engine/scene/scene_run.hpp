@@ -30,6 +30,7 @@ struct RunOptions {
   // Called at every output frame after its files are written (e.g. the renderer); an exception
   // from it ends the run as "failed".
   std::function<void(const FrameDescription&)> on_frame;
+  bool rest_positions = false;  // keep x0, the rest positions (surface reconstruction anchors to them)
 };
 
 // Builds the scene (throws SceneError before anything is written if a body has no particles),
