@@ -594,6 +594,9 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
       TableReader r(ctx, *a->get(i)->as_table(), scene_section("colliders"), "colliders." + std::to_string(i), co);
       ColliderSpec c;
       c.name = r.text("name").value_or("collider" + std::to_string(i + 1));
+      if (c.name.empty() || c.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=
+                                std::string::npos)
+        r.fail("name", "'" + c.name + "' must be letters, digits and _ (it names metrics.csv columns)");
       const std::string shape = r.choice("shape");
       r.set_filter(shape);
       if (shape == "plane") {

@@ -134,7 +134,8 @@ std::vector<SectionSpec> build_schema() {
   const std::vector<std::string> kFrictionLaws = {"coulomb", "velocity_dependent"};
   s.push_back({"colliders", true, "Kinematic rigid solids that act on the grid.",
                {
-                   {"name", K::text, Q::dimensionless, "", false, "label used in messages and metrics.csv columns"},
+                   {"name", K::text, Q::dimensionless, "", false,
+                    "letters, digits and _: names its metrics.csv columns (default: colliderN)"},
                    {"shape", K::choice, Q::dimensionless, "", true, "plane (a half-space), box or cylinder", -kInf,
                     kInf, false, {"plane", "box", "cylinder"}},
                    {"point", K::vector3, Q::length, "", true, "a point on the plane", -kInf, kInf, false, {}, "plane"},
