@@ -113,6 +113,25 @@ void main() {
 }
 )";
 
+const char* const kSnowFragment = R"(#version 330 core
+in vec3 p_view;
+in vec3 n_view;
+in vec3 p_world;
+uniform int facets;  // 1: hoar crystals, flat per facet and sparkling; 0: the snow surface
+layout(location = 0) out vec4 albedo_gloss;
+layout(location = 1) out vec4 normal_fade;
+void main() {
+  // A crystal's facets are flat: the normal of the triangle itself, from the screen-space
+  // derivatives of the position, not the prism's vertex normals (shared between facets).
+  vec3 n = facets == 1 ? normalize(cross(dFdx(p_view), dFdy(p_view))) : normalize(n_view);
+  if (dot(n, p_view) > 0.0) n = -n;  // the side facing the eye
+  // The thesis' snow albedo (0.9, 0.95, 1.0), stored as its square root (the lighting pass
+  // squares colours into linear light); alpha >= 0.5 marks snow, 1 a crystal facet.
+  albedo_gloss = vec4(sqrt(vec3(0.9, 0.95, 1.0)), facets == 1 ? 1.0 : 0.5);
+  normal_fade = vec4(0.5 * n + 0.5, 0.0);
+}
+)";
+
 const char* const kDepthOnlyFragment = R"(#version 330 core
 void main() {}
 )";
@@ -183,6 +202,23 @@ void main() {
 // Blinn-Phong highlight and the occlusion pass's result. Then a mild Reinhard-style tone curve.
 // Colours go to linear light and back with gamma 2 (squares and square roots: far cheaper than
 // pow on llvmpipe, and close to sRGB's 2.2).
+//
+// Snow (albedo alpha >= 0.5; DESIGN.md section 7, thesis sections 4.2 and 5.3) replaces the
+// Lambert and Blinn-Phong terms by an approximate subsurface model, with a = (0.9, 0.95, 1.0):
+// - multiple scattering as wrap lighting (Green 2004, "Real-time approximations to subsurface
+//   scattering", GPU Gems ch. 16): a max(0, (n.l + w) / (1 + w)), w = 0.5, so light bleeds past
+//   the terminator and the snow's shading stays soft; the shadow map is faded out over the
+//   wrapped band (where the surface shadows itself) so the terminator shows no step;
+// - single scattering of a semi-infinite layer (Hanrahan and Krueger 1993, first-order term):
+//   a p_HG(cos t) pi n.l / (n.l + n.v) with the Henyey-Greenstein phase function
+//   p_HG = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos t)^(3/2)), g = 0.5 (the thesis' value), t the
+//   angle between the light's and the eye ray's directions of travel: snow lit from behind glows
+//   at its rim;
+// - sparkle: hoar crystal facets (alpha 1) reflect the key light in a tight Blinn-Phong lobe
+//   (n.h)^128 on the facet's own normal (Blinn 1977), so single grains flash; a crystal is a thin
+//   plate of ice that light crosses, so its facets take Green's full wrap (w = 1) instead of 0.5.
+// With SUBSURFACE 0 snow is plain Lambertian with the same albedo (for comparison). Snow is
+// exposed at 0.75 so that lit snow reads white without clipping to the tone curve's top.
 const char* const kCompositeFragment = R"(#version 330 core
 in vec2 uv;
 uniform sampler2D albedo_tex, normal_tex, occlusion_tex;
@@ -202,6 +238,22 @@ float lit_fraction(vec3 p, vec3 n) {
   // One bilinear comparison: the 2x2 texels around the point, weighted.
   return texture(shadow_map, vec3(s.xy, s.z - 2e-4));
 }
+vec3 snow_radiance(vec3 a, vec3 n, vec3 v, float lit, bool facet, float nh, vec3 ambient) {
+  vec3 light = vec3(1.0, 0.97, 0.92) * 1.05;
+  float nl = dot(n, light_dir_view), nv = max(dot(n, v), 0.0);
+#if SUBSURFACE
+  const float g = 0.5;
+  float w = facet ? 1.0 : 0.5;
+  float wrapped = max(0.0, (nl + w) / (1.0 + w)) * mix(1.0, lit, smoothstep(-w, 0.25, nl));
+  float cos_t = dot(-light_dir_view, v), phase = (1.0 - g * g) / (4.0 * pow(1.0 + g * g - 2.0 * g * cos_t, 1.5));
+  float single = phase * max(nl, 0.0) / (max(nl, 0.0) + nv + 1e-4) * lit;
+  vec3 c = a * light * wrapped + a * light * single + a * ambient;
+#else
+  vec3 c = a * (light * max(nl, 0.0) * lit + ambient);
+#endif
+  if (facet) c += vec3(4.0 * pow(nh, 128.0) * lit * step(0.0, nl));
+  return c;
+}
 void main() {
   vec3 background = mix(background_bottom, background_top, uv.y);
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -218,8 +270,13 @@ void main() {
   vec3 ambient = mix(vec3(0.16, 0.15, 0.14), vec3(0.30, 0.34, 0.42), 0.5 + 0.5 * dot(n, up_view));
   vec3 h = normalize(light_dir_view + normalize(-p));
   float s1 = max(dot(n, h), 0.0), s3 = s1 * s1 * s1, s6 = s3 * s3, s12 = s6 * s6, s24 = s12 * s12;
-  float spec = ag.a * s24 * s24 * lit;  // (n . h)^48 by multiplications, cheaper than pow()
-  vec3 c = albedo * (vec3(1.0, 0.97, 0.92) * 1.05 * diffuse + ambient) + vec3(spec);
+  vec3 c;
+  if (ag.a < 0.5) {
+    float spec = ag.a * s24 * s24 * lit;  // (n . h)^48 by multiplications, cheaper than pow()
+    c = albedo * (vec3(1.0, 0.97, 0.92) * 1.05 * diffuse + ambient) + vec3(spec);
+  } else {
+    c = 0.75 * snow_radiance(albedo, n, normalize(-p), lit, ag.a > 0.75, s1, ambient);
+  }
 #if AMBIENT_OCCLUSION
   c *= texture(occlusion_tex, uv).r;
 #endif

@@ -19,9 +19,12 @@ extern const char* const kSphereShadowFragment;
 extern const char* const kMeshVertex;
 extern const char* const kMeshFragment;
 extern const char* const kDepthOnlyFragment;
+// The snow surface and its hoar crystals (kMeshVertex's outputs): the snow albedo and a marker
+// for the lighting pass's snow model; crystals get flat facet normals.
+extern const char* const kSnowFragment;
 // Full-screen passes (one triangle): ambient occlusion at half resolution, then lighting,
 // shadows, background, tone and gamma. Both get kScreenFunctions after their #version line, and
-// the lighting pass the preprocessor switches SHADOWS and AMBIENT_OCCLUSION (0 or 1): llvmpipe
+// the lighting pass the preprocessor switches SHADOWS, AMBIENT_OCCLUSION and SUBSURFACE (0 or 1): llvmpipe
 // runs both sides of a branch on a uniform under a mask, so only leaving code out saves it.
 extern const char* const kCompositeVertex;
 extern const char* const kScreenFunctions;
