@@ -212,6 +212,7 @@ struct SnowScene {
     settings.sphere_radius = 0.5 * block.spacing;
     settings.domain_min = {-0.15, 0, -0.15}, settings.domain_max = {0.15, 0.3, 0.15};
     settings.camera_position = Vec3{0.21, 0.2, 0.25}, settings.camera_target = Vec3{0, 0.09, 0};  // the ball fills the frame
+    settings.snow_grain = 0.004;  // a few pixels
   }
   Image render() {
     mesh = surface::reconstruct_surface(particles.view(), params, backend::Serial{});

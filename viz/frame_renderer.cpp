@@ -37,13 +37,14 @@ struct FrameRenderer::Resources {
         sphere_shadow(gl, "sphere shadows", shaders::kSphereVertex, shaders::kSphereShadowFragment),
         mesh(gl, "meshes", shaders::kMeshVertex, shaders::kMeshFragment),
         mesh_shadow(gl, "mesh shadows", shaders::kMeshVertex, shaders::kDepthOnlyFragment),
-        snow(gl, "snow", shaders::kMeshVertex, shaders::kSnowFragment),
+        snow(gl, "snow", shaders::kSnowVertex, shaders::kSnowFragment),
         occlusion(gl, "occlusion", shaders::kCompositeVertex, screen_pass_source(shaders::kOcclusionFragment, settings)),
         composite(gl, "composite", shaders::kCompositeVertex, screen_pass_source(shaders::kCompositeFragment, settings)) {}
   GlProgram sphere, sphere_shadow, mesh, mesh_shadow, snow, occlusion, composite;
   GLuint vao[4] = {};           // spheres, meshes, the empty one of the full-screen pass, snow
-  // x0, x1, x2, scalar, mesh vertices, particle indices, snow positions, snow normals, snow indices
-  GLuint buffers[9] = {};
+  // x0, x1, x2, scalar, mesh vertices, particle indices, snow positions, snow normals, snow indices,
+  // snow rest positions
+  GLuint buffers[10] = {};
   GLuint framebuffers[4] = {};  // shadow, geometry (albedo, normal, depth), occlusion, final
   // shadow depth, albedo, normal (packed 0.5 n + 0.5), depth, occlusion (half size), final, colour map
   GLuint textures[7] = {};
@@ -87,7 +88,7 @@ FrameRenderer::FrameRenderer(const GlContext& context, const RenderSettings& set
     : gl_(context.gl()), settings_(settings), r_(std::make_unique<Resources>(gl_, settings)) {
   const Gl& gl = gl_;
   gl.glGenVertexArrays(4, r_->vao);
-  gl.glGenBuffers(9, r_->buffers);
+  gl.glGenBuffers(10, r_->buffers);
   gl.glGenFramebuffers(4, r_->framebuffers);
   const int w = settings_.width, h = settings_.height;
   GLuint* t = r_->textures;
@@ -120,7 +121,7 @@ FrameRenderer::FrameRenderer(const GlContext& context, const RenderSettings& set
 FrameRenderer::~FrameRenderer() {
   gl_.glDeleteTextures(7, r_->textures);
   gl_.glDeleteFramebuffers(4, r_->framebuffers);
-  gl_.glDeleteBuffers(9, r_->buffers);
+  gl_.glDeleteBuffers(10, r_->buffers);
   gl_.glDeleteVertexArrays(4, r_->vao);
 }
 
@@ -221,8 +222,12 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
     upload(GL_ARRAY_BUFFER, r_->buffers[7], m.normals.data(), m.normals.size() * vec, crystal_normals.data(),
            crystal_normals.size() * vec);
     gl.glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    gl.glEnableVertexAttribArray(0);
-    gl.glEnableVertexAttribArray(1);
+    // Rest positions seed the grains; the crystals have none (zeros).
+    const std::vector<surface::Vec3f> crystal_rest(crystal_positions.size(), surface::Vec3f{0, 0, 0});
+    upload(GL_ARRAY_BUFFER, r_->buffers[9], m.rest_positions.data(), m.rest_positions.size() * vec, crystal_rest.data(),
+           crystal_rest.size() * vec);
+    gl.glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    for (GLuint a = 0; a < 3; ++a) gl.glEnableVertexAttribArray(a);
     const std::size_t index = sizeof(std::uint32_t);
     upload(GL_ELEMENT_ARRAY_BUFFER, r_->buffers[8], m.triangles.data(), m.triangles.size() * index,
            crystal_triangles.data(), crystal_triangles.size() * index);
@@ -296,6 +301,7 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
   if (snow_indices + crystal_indices > 0) {
     const GlProgram& p = r_->snow;
     set_camera(p, view, projection);
+    p.set("grain", float(s.snow_grain));
     p.set("facets", 0);
     draw_snow(0, snow_indices);
     p.set("facets", 1);

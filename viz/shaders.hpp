@@ -19,8 +19,10 @@ extern const char* const kSphereShadowFragment;
 extern const char* const kMeshVertex;
 extern const char* const kMeshFragment;
 extern const char* const kDepthOnlyFragment;
-// The snow surface and its hoar crystals (kMeshVertex's outputs): the snow albedo and a marker
-// for the lighting pass's snow model; crystals get flat facet normals.
+// The snow surface and its hoar crystals, with each vertex's rest position: the snow albedo and a
+// marker for the lighting pass's snow model; grains (cells in material coordinates) tilt the
+// surface's normal, crystals get flat facet normals.
+extern const char* const kSnowVertex;
 extern const char* const kSnowFragment;
 // Full-screen passes (one triangle): ambient occlusion at half resolution, then lighting,
 // shadows, background, tone and gamma. Both get kScreenFunctions after their #version line, and
