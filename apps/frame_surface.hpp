@@ -11,7 +11,7 @@
 
 namespace firn::app {
 
-// The reconstruction's defaults at the scene's resolution.
+// The reconstruction's defaults at the scene's resolution, with kernel_radius = 3.
 surface::SurfaceParams scene_surface_params(const SceneSpec& scene);
 
 // The OpenMP backend with `threads` threads (0: all cores).
