@@ -163,15 +163,19 @@ TEST(GoldenImage, LegendOnAFrame) {
   check_golden("legend", image);
 }
 
+// Expects `image` out of the golden tolerance around `reference` (and records the mean difference).
+void expect_rejected(const Image& image, const Image& reference, const std::string& what) {
+  const Difference d = compare(image, reference);
+  ::testing::Test::RecordProperty(what + " mean", std::to_string(d.mean_abs));
+  EXPECT_FALSE(within_tolerance(d)) << what << ": mean " << d.mean_abs << ", over 32: " << d.fraction_over_32;
+}
+
 // The tolerance is tight enough to fail: the images without shadows, without ambient occlusion,
 // or with one material's colour changed are all out of it.
 TEST(GoldenTolerance, RejectsAVisibleChange) {
   GoldenScene g("layers");
   const Image reference = render_with(GlApi::osmesa, g);
-  auto expect_rejected = [&](const char* what) {
-    const Difference d = compare(render_with(GlApi::osmesa, g), reference);
-    EXPECT_FALSE(within_tolerance(d)) << what << ": mean " << d.mean_abs << ", over 32: " << d.fraction_over_32;
-  };
+  auto expect_rejected = [&](const char* what) { viz::expect_rejected(render_with(GlApi::osmesa, g), reference, what); };
   g.settings.shadows = false;
   expect_rejected("shadows off");
   g.settings.shadows = true;
@@ -237,11 +241,7 @@ TEST(GoldenImage, SnowSurfaceWithCrystals) {
 TEST(GoldenTolerance, RejectsSnowWithoutSubsurfaceOrCrystals) {
   SnowScene snow;
   const Image reference = snow.render();
-  auto expect_rejected = [&](const char* what) {
-    const Difference d = compare(snow.render(), reference);
-    RecordProperty(std::string(what) + " mean", std::to_string(d.mean_abs));
-    EXPECT_FALSE(within_tolerance(d)) << what << ": mean " << d.mean_abs << ", over 32: " << d.fraction_over_32;
-  };
+  auto expect_rejected = [&](const char* what) { viz::expect_rejected(snow.render(), reference, what); };
   snow.settings.subsurface = false;
   expect_rejected("Lambertian snow");
   snow.settings.subsurface = true;

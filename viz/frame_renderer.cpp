@@ -37,7 +37,7 @@ struct FrameRenderer::Resources {
         sphere_shadow(gl, "sphere shadows", shaders::kSphereVertex, shaders::kSphereShadowFragment),
         mesh(gl, "meshes", shaders::kMeshVertex, shaders::kMeshFragment),
         mesh_shadow(gl, "mesh shadows", shaders::kMeshVertex, shaders::kDepthOnlyFragment),
-        snow(gl, "snow", shaders::kSnowVertex, shaders::kSnowFragment),
+        snow(gl, "snow", shaders::kMeshVertex, shaders::kSnowFragment),
         occlusion(gl, "occlusion", shaders::kCompositeVertex, screen_pass_source(shaders::kOcclusionFragment, settings)),
         composite(gl, "composite", shaders::kCompositeVertex, screen_pass_source(shaders::kCompositeFragment, settings)) {}
   GlProgram sphere, sphere_shadow, mesh, mesh_shadow, snow, occlusion, composite;

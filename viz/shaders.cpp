@@ -76,15 +76,18 @@ void main() {
 const char* const kMeshVertex = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
+layout(location = 2) in vec3 rest_position;  // the snow surface's material coordinates; 0 elsewhere
 uniform mat4 view, projection;
 out vec3 p_view;
 out vec3 n_view;
 out vec3 p_world;
+out vec3 x0;
 void main() {
   vec4 p = view * vec4(position, 1.0);
   p_view = p.xyz;
   n_view = mat3(view) * normal;
   p_world = position;
+  x0 = rest_position;
   gl_Position = projection * p;
 }
 )";
@@ -110,23 +113,6 @@ void main() {
   float fade = fade_radius > 0.0 ? smoothstep(0.4 * fade_radius, fade_radius, length(p_world - fade_center)) : 0.0;
   albedo_gloss = vec4(albedo, 0.04);
   normal_fade = vec4(0.5 * n + 0.5, fade);
-}
-)";
-
-const char* const kSnowVertex = R"(#version 330 core
-layout(location = 0) in vec3 position;
-layout(location = 1) in vec3 normal;
-layout(location = 2) in vec3 rest_position;
-uniform mat4 view, projection;
-out vec3 p_view;
-out vec3 n_view;
-out vec3 x0;
-void main() {
-  vec4 p = view * vec4(position, 1.0);
-  p_view = p.xyz;
-  n_view = mat3(view) * normal;
-  x0 = rest_position;
-  gl_Position = projection * p;
 }
 )";
 

@@ -15,14 +15,14 @@ extern const char* const kSphereFragment;
 // The shadow pass's sphere: under the light's orthographic projection a sphere's shadow is
 // exactly a disc; drawn at the centre's depth without writing gl_FragDepth.
 extern const char* const kSphereShadowFragment;
-// Triangle meshes (ground, colliders) with position and normal per vertex.
+// Triangle meshes (ground, colliders, snow) with position and normal per vertex (and rest position
+// for snow).
 extern const char* const kMeshVertex;
 extern const char* const kMeshFragment;
 extern const char* const kDepthOnlyFragment;
-// The snow surface and its hoar crystals, with each vertex's rest position: the snow albedo and a
-// marker for the lighting pass's snow model; grains (cells in material coordinates) tilt the
-// surface's normal, crystals get flat facet normals.
-extern const char* const kSnowVertex;
+// The snow surface and its hoar crystals (kMeshVertex, with each vertex's rest position): the snow
+// albedo and a marker for the lighting pass's snow model; grains (cells in material coordinates)
+// tilt the surface's normal, crystals get flat facet normals.
 extern const char* const kSnowFragment;
 // Full-screen passes (one triangle): ambient occlusion at half resolution, then lighting,
 // shadows, background, tone and gamma. Both get kScreenFunctions after their #version line, and
