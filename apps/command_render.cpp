@@ -1,7 +1,8 @@
-// firn render OUTDIR [--render spheres] [--video] [--set render.KEY=VALUE]... [--gl egl|osmesa]
+// firn render OUTDIR [--render spheres|surface] [--video] [--set render.KEY=VALUE]... [--gl egl|osmesa]
 // Re-renders a finished run from OUTDIR/particles/NNNNN.vtp and OUTDIR/scene.resolved.toml, with
 // the [render] settings (and materials' colours) changed by --set, into OUTDIR/frames (and
-// OUTDIR/video.mp4).
+// OUTDIR/video.mp4). Surfaces anchor their noise and crystals to the first frame's positions
+// (viz/vtp_frame.hpp).
 #include <dirent.h>
 
 #include <algorithm>
@@ -10,11 +11,13 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/frame_surface.hpp"
 #include "apps/run_rendering.hpp"
 #include "engine/output/atomic_file.hpp"
 #include "engine/scene/scene_reader.hpp"
 #include "viz/frame_pipeline.hpp"
 #include "viz/scene_render_settings.hpp"
+#include "viz/surface/reconstruct_surface.hpp"
 #include "viz/vtp_frame.hpp"
 
 namespace firn::app {
@@ -47,18 +50,13 @@ void add_render_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   CLI::App* c = app.add_subcommand("render", "re-render a finished run from its particle files");
   c->add_option("outdir", o->dir, "the run's output folder (with scene.resolved.toml and particles/)")->required();
-  c->add_option("--render", o->render, "style: spheres")->check(CLI::IsMember({"spheres", "surface"}))
+  c->add_option("--render", o->render, "style: spheres or surface")->check(CLI::IsMember({"spheres", "surface"}))
       ->capture_default_str();
   c->add_flag("--video", o->video, "encode the frames to video.mp4");
   c->add_option("--set", o->sets,
                 "override a render key or a material's colour, e.g. --set render.color_by=speed (repeatable)");
   c->add_option("--gl", o->gl, "OpenGL context: egl or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
   c->callback([o]() {
-    if (o->render == "surface") {
-      std::fprintf(stderr, "firn render: surface rendering is not built yet; use --render spheres\n");
-      set_exit_status(2);
-      return;
-    }
     // Only what changes the picture, not the run: [render] keys and the materials' colours.
     auto drawing_only = [](const std::string& set) {
       const std::string key = set.substr(0, set.find('='));
@@ -90,7 +88,21 @@ void add_render_command(CLI::App& app) {
       make_directories(o->dir + "/frames");
       viz::FramePipeline pipeline(viz::scene_render_settings(scene.spec), viz::parse_gl_api(o->gl),
                                   {o->dir + "/frames", o->video ? o->dir + "/video.mp4" : "", scene.spec.render.fps});
-      for (const auto& [frame, path] : files) pipeline.add(viz::VtpFrame(path, frame, scene.spec).render_frame());
+      const bool draw_surface = o->render == "surface";
+      const surface::SurfaceParams params = scene_surface_params(scene.spec);
+      const backend::OpenMP omp = surface_backend(0);
+      const viz::VtpRestPositions rest = draw_surface ? viz::read_vtp_rest_positions(files.front().second)
+                                                 : viz::VtpRestPositions{};
+      for (const auto& [frame, path] : files) {
+        const viz::VtpFrame particles(path, frame, scene.spec, draw_surface ? &rest : nullptr);
+        viz::RenderFrame r = particles.render_frame();
+        surface::SurfaceMesh mesh;
+        if (draw_surface) {
+          mesh = surface::reconstruct_surface(particles.particle_view(), params, omp);
+          r.surface = &mesh;
+        }
+        pipeline.add(r);
+      }
       pipeline.finish();
       std::printf("rendered %zu frames into %s/frames%s (%s)\n", files.size(), o->dir.c_str(),
                   o->video ? ", video.mp4" : "", pipeline.gl_description().c_str());

@@ -1,6 +1,7 @@
 // firn run SCENE [--out DIR] [--set KEY=VALUE]... [--threads N] [--preview]
 //                [--render none|spheres|surface] [--video] [--mesh] [--gl egl|osmesa]
-// With --render spheres, every output frame is also drawn to frames/NNNNN.png (and video.mp4).
+// With --render spheres or surface, every output frame is also drawn to frames/NNNNN.png (and
+// video.mp4); surface draws the reconstructed snow surface (apps/frame_surface.hpp).
 // Validates the scene (any fault: one line on standard error, exit status 2, nothing written),
 // runs it with progress on a terminal, and writes the outputs of DESIGN.md section 5.
 // Exit status: 0 completed, 1 unstable or failed, 2 bad scene or options, 130 interrupted.
@@ -78,13 +79,8 @@ void add_run_command(CLI::App& app) {
   run->add_flag("--mesh", o->mesh, "write reconstructed surfaces to meshes/NNNNN.ply");
   run->add_option("--gl", o->gl, "OpenGL context: egl or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
   run->callback([o]() {
-    if (o->render == "surface") {
-      std::fprintf(stderr, "firn run: --render surface is not built yet (--mesh writes the surfaces); use --render spheres\n");
-      set_exit_status(2);
-      return;
-    }
     if (o->video && o->render == "none") {
-      std::fprintf(stderr, "firn run: --video needs --render spheres\n");
+      std::fprintf(stderr, "firn run: --video needs --render spheres or surface\n");
       set_exit_status(2);
       return;
     }
@@ -103,7 +99,7 @@ void add_run_command(CLI::App& app) {
     RunRendering rendering;
     if (o->render != "none") {
       try {
-        rendering = start_run_rendering(scene.spec, options.out_dir, o->video, o->gl);
+        rendering = start_run_rendering(scene.spec, options.out_dir, o->video, o->gl, o->render == "surface", o->threads);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "firn run: cannot render: %s\n", e.what());
         set_exit_status(2);
@@ -111,8 +107,9 @@ void add_run_command(CLI::App& app) {
       }
       options.on_frame = rendering.on_frame;
     }
+    // The surface's noise and crystals are anchored to the rest positions.
+    if (o->mesh || o->render == "surface") options.rest_positions = true;
     if (o->mesh) {
-      options.rest_positions = true;  // the surface's noise and crystals are anchored to them
       const auto draw = options.on_frame;
       const auto meshes = start_run_meshes(scene.spec, options.out_dir, o->threads);
       options.on_frame = [draw, meshes](const FrameDescription& f) {

@@ -23,7 +23,7 @@ void add_unavailable(CLI::App& parent, const char* name, const char* what) {
 
 }  // namespace
 
-RunRendering start_run_rendering(const SceneSpec&, const std::string&, bool, const std::string&) {
+RunRendering start_run_rendering(const SceneSpec&, const std::string&, bool, const std::string&, bool, int) {
   throw std::runtime_error(kMissing);
 }
 

@@ -19,8 +19,11 @@ struct RunRendering {
 };
 
 // Frames go to OUT_DIR/frames/NNNNN.png, and with `video` to OUT_DIR/video.mp4. `gl`: "egl",
-// "osmesa" or "" (EGL, falling back to OSMesa). Throws std::runtime_error.
-RunRendering start_run_rendering(const SceneSpec& scene, const std::string& out_dir, bool video, const std::string& gl);
+// "osmesa" or "" (EGL, falling back to OSMesa). With `draw_surface` each frame's snow surface is
+// reconstructed (apps/frame_surface.hpp, `threads` as for the run) and drawn instead of the
+// particles. Throws std::runtime_error.
+RunRendering start_run_rendering(const SceneSpec& scene, const std::string& out_dir, bool video, const std::string& gl,
+                                 bool draw_surface, int threads);
 
 // firn render OUTDIR ... and firn bench render ...
 void add_render_command(CLI::App& app);

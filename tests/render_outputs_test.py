@@ -1,11 +1,12 @@
-"""End-to-end checks of rendering (issue 6): `firn run --render spheres --video` and `firn render`.
+"""End-to-end checks of rendering (issues 6 and 7): `firn run --render spheres|surface --video` and `firn render`.
 
 Usage: python3 render_outputs_test.py FIRN REPO_ROOT SCRATCH_DIR TEST
 Runs the snowball_pair scene at preview resolution, shortened and at 320x180, and checks that
 every particle frame has its PNG, that video.mp4 is H.264/yuv420p with one video frame per
 output frame (ffprobe), that `--render none` draws nothing, that `firn render` re-renders a
-finished run from its .vtp files with other [render] settings (and refuses non-render keys), and
-that without a working EGL the run falls back to OSMesa.
+finished run from its .vtp files with other [render] settings (and refuses non-render keys), that
+`--render surface` draws a frame per particle frame in both commands, and that without a working
+EGL the run falls back to OSMesa.
 """
 import glob
 import os
@@ -98,6 +99,28 @@ def test_rerender():
     check(frames[0] != frames[1], "a material's colour set by firn render did not change the frame")
     r = run(["render", out, "--set", "simulation.dx=0.001"])
     check(r.returncode == 2 and "render." in r.stderr, f"a non-render --set: {r.returncode} {r.stderr}")
+
+
+def test_surface():
+    # --render surface draws the reconstructed snow surface; firn render redraws it from the .vtp
+    # files (anchored to the first frame); both differ from the spheres of the same frame.
+    out = fresh("surface")
+    short = SMALL + ["--set", "simulation.end_time=1 ms"]
+    r = run(["run", SCENE, "--out", out, "--render", "surface"] + short)
+    check(r.returncode == 0, f"firn run --render surface exited {r.returncode}: {r.stderr}")
+    particles = sorted(glob.glob(os.path.join(out, "particles", "*.vtp")))
+    frames = sorted(glob.glob(os.path.join(out, "frames", "*.png")))
+    check(len(frames) == len(particles) > 1, f"{len(frames)} surface frames for {len(particles)} particle frames")
+    check(all(png_size(f) == (320, 180) for f in frames), "a surface frame is not 320x180")
+    last = frames[-1]
+    images = {}
+    for style in ["surface", "spheres"]:
+        r = run(["render", out, "--render", style])
+        check(r.returncode == 0, f"firn render --render {style} exited {r.returncode}: {r.stderr}")
+        check(len(glob.glob(os.path.join(out, "frames", "*.png"))) == len(particles), f"firn render {style} skipped frames")
+        with open(last, "rb") as f:
+            images[style] = f.read()
+    check(images["surface"] != images["spheres"], "the surface frame looks like the spheres frame")
 
 
 def test_fallback():

@@ -1,7 +1,7 @@
-// The renderer (viz/): golden images rendered with OSMesa and compared by per-pixel difference
-// statistics (which survive Mesa versions, unlike byte equality), EGL against OSMesa, the PNG
-// writer, ffmpeg started by argument vector, the .vtp reader, exposed-particle culling, SDF
-// meshing and the colour maps. Regenerate the golden images with FIRN_UPDATE_GOLDEN=1.
+// The renderer (viz/): golden images (particles, and a snow surface) rendered with OSMesa and
+// compared by per-pixel difference statistics (which survive Mesa versions, unlike byte
+// equality), EGL against OSMesa, the PNG writer, ffmpeg started by argument vector, the .vtp
+// reader, exposed-particle culling, SDF meshing and the colour maps. Regenerate the golden images with FIRN_UPDATE_GOLDEN=1.
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
@@ -17,6 +17,7 @@
 #include <stb/stb_image.h>
 
 #include "engine/output/vtp_writer.hpp"
+#include "engine/particle_storage.hpp"
 #include "engine/scene/scene_builder.hpp"
 #include "kernels/backend/serial.hpp"
 #include "viz/collider_sdf.hpp"
@@ -28,6 +29,7 @@
 #include "viz/legend.hpp"
 #include "viz/png_writer.hpp"
 #include "viz/sdf_mesh.hpp"
+#include "viz/surface/reconstruct_surface.hpp"
 #include "viz/synthetic_particles.hpp"
 #include "viz/vtp_reader.hpp"
 
@@ -161,15 +163,19 @@ TEST(GoldenImage, LegendOnAFrame) {
   check_golden("legend", image);
 }
 
+// Expects `image` out of the golden tolerance around `reference` (and records the mean difference).
+void expect_rejected(const Image& image, const Image& reference, const std::string& what) {
+  const Difference d = compare(image, reference);
+  ::testing::Test::RecordProperty(what + " mean", std::to_string(d.mean_abs));
+  EXPECT_FALSE(within_tolerance(d)) << what << ": mean " << d.mean_abs << ", over 32: " << d.fraction_over_32;
+}
+
 // The tolerance is tight enough to fail: the images without shadows, without ambient occlusion,
 // or with one material's colour changed are all out of it.
 TEST(GoldenTolerance, RejectsAVisibleChange) {
   GoldenScene g("layers");
   const Image reference = render_with(GlApi::osmesa, g);
-  auto expect_rejected = [&](const char* what) {
-    const Difference d = compare(render_with(GlApi::osmesa, g), reference);
-    EXPECT_FALSE(within_tolerance(d)) << what << ": mean " << d.mean_abs << ", over 32: " << d.fraction_over_32;
-  };
+  auto expect_rejected = [&](const char* what) { viz::expect_rejected(render_with(GlApi::osmesa, g), reference, what); };
   g.settings.shadows = false;
   expect_rejected("shadows off");
   g.settings.shadows = true;
@@ -178,6 +184,69 @@ TEST(GoldenTolerance, RejectsAVisibleChange) {
   g.settings.ambient_occlusion = true;
   g.scene.ranges[1].color = {0.38f, 0.80f, 0.50f};
   expect_rejected("middle layer green instead of blue");
+}
+
+// The snow surface of a ball of particles (viz/surface) on the ground, at 320 x 180: large enough
+// that its hoar crystals span a few pixels each.
+struct SnowScene {
+  ParticleStorage<float> particles;
+  surface::SurfaceParams params;
+  RenderSettings settings;
+  surface::SurfaceMesh mesh;
+  FrameScene scene;
+
+  SnowScene() {
+    // The particles of a jittered block within 0.1 m of its centre, at rest where they are.
+    const SyntheticParticles block = jittered_block(8000, 0.2, {-0.1, 0, -0.1});
+    std::vector<std::size_t> inside;
+    for (std::size_t i = 0; i < block.x[0].size(); ++i) {
+      const double y = block.x[1][i] - 0.1;
+      if (block.x[0][i] * block.x[0][i] + y * y + block.x[2][i] * block.x[2][i] < 0.01) inside.push_back(i);
+    }
+    particles.enable(Attribute::x0);
+    particles.resize(inside.size());
+    const ParticleView<float> pv = particles.view();
+    for (std::size_t p = 0; p < pv.n; ++p) {
+      for (int d = 0; d < 3; ++d) pv.x[d][p] = pv.x0[d][p] = block.x[d][inside[p]];
+      pv.vol0[p] = float(block.spacing * block.spacing * block.spacing);
+    }
+    params.simulation_dx = 2 * block.spacing;  // two particles per cell and axis
+    settings.width = 320, settings.height = 180;
+    settings.particle_spacing = block.spacing;
+    settings.sphere_radius = 0.5 * block.spacing;
+    settings.domain_min = {-0.15, 0, -0.15}, settings.domain_max = {0.15, 0.3, 0.15};
+    settings.camera_position = Vec3{0.21, 0.2, 0.25}, settings.camera_target = Vec3{0, 0.09, 0};  // the ball fills the frame
+    settings.snow_grain = 0.004;  // a few pixels
+  }
+  Image render() {
+    mesh = surface::reconstruct_surface(particles.view(), params, backend::Serial{});
+    scene.snow = &mesh;
+    const auto context = make_gl_context(GlApi::osmesa);
+    FrameRenderer renderer(*context, settings);
+    const Bounds bounds = position_bounds({{particles.view().x[0], particles.view().x[1], particles.view().x[2]}, false,
+                                           particles.size()});
+    return renderer.render(scene, frame_camera(settings, bounds));
+  }
+};
+
+TEST(GoldenImage, SnowSurfaceWithCrystals) {
+  SnowScene snow;
+  const Image image = snow.render();
+  EXPECT_GT(snow.mesh.crystals.size(), 100u);
+  check_golden("snow", image);
+}
+
+// The snow model's parts are visible: without the subsurface term or without the hoar crystals the
+// image is out of the golden tolerance.
+TEST(GoldenTolerance, RejectsSnowWithoutSubsurfaceOrCrystals) {
+  SnowScene snow;
+  const Image reference = snow.render();
+  auto expect_rejected = [&](const char* what) { viz::expect_rejected(snow.render(), reference, what); };
+  snow.settings.subsurface = false;
+  expect_rejected("Lambertian snow");
+  snow.settings.subsurface = true;
+  snow.params.crystals = false;
+  expect_rejected("no hoar crystals");
 }
 
 TEST(GlContexts, EglAndOsMesaRenderTheSameImage) {

@@ -11,6 +11,7 @@ namespace firn::viz {
 namespace {
 
 constexpr int kColliderMeshCells = 64;  // along the longest side of a collider's box
+const Rgb kSnowAlbedo = {0.9f, 0.95f, 1.0f};  // the thesis' snow albedo, as the snow shader uses it
 
 template <class T>
 void add_positions(const PositionColumns& p, Bounds& b) {
@@ -61,7 +62,14 @@ void FramePipeline::add(const RenderFrame& frame) {
   for (const MaterialSpan& m : frame.materials)
     scene.ranges.push_back({m.begin, m.end, s.material_colors.at(std::size_t(m.material))});
   Legend legend;
-  if (frame.field) {
+  if (frame.surface) {
+    // The snow surface stands for the particles, in the snow material (viz/shaders.cpp).
+    scene.positions.count = 0;
+    scene.snow = frame.surface;
+    legend.title = "surface";
+    legend.names = {"snow"};
+    legend.colors = {kSnowAlbedo};
+  } else if (frame.field) {
     const auto [lo, hi] = std::minmax_element(frame.field, frame.field + frame.positions.count);
     if (frame.positions.count > 0) {
       field_min_ = field_seen_ ? std::min(field_min_, double(*lo)) : *lo;

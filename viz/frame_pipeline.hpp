@@ -1,6 +1,6 @@
 // Renders a sequence of frames and hands them to the frame writer: a fixed camera framed on the
 // first frame (so the video does not jump), a colour range that only widens, collider meshes
-// from their signed distances, the legend, then PNG and video off this thread.
+// from their signed distances, the snow surface where the frame has one, the legend, then PNG and video off this thread.
 #pragma once
 
 #include <memory>

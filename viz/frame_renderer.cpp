@@ -8,6 +8,7 @@
 #include "viz/exposed_particles.hpp"
 #include "viz/gl_program.hpp"
 #include "viz/shaders.hpp"
+#include "viz/surface/hoar_crystals.hpp"
 
 namespace firn::viz {
 namespace {
@@ -23,7 +24,8 @@ std::array<float, 3> to_float(const Vec3& v) { return {float(v[0]), float(v[1]),
 std::string screen_pass_source(const char* body, const RenderSettings& s) {
   std::string source = body;
   const std::string prelude = "#define SHADOWS " + std::to_string(int(s.shadows)) + "\n#define AMBIENT_OCCLUSION " +
-                              std::to_string(int(s.ambient_occlusion)) + "\n" + shaders::kScreenFunctions;
+                              std::to_string(int(s.ambient_occlusion)) + "\n#define SUBSURFACE " +
+                              std::to_string(int(s.subsurface)) + "\n" + shaders::kScreenFunctions;
   return source.insert(source.find('\n') + 1, prelude);
 }
 
@@ -35,11 +37,14 @@ struct FrameRenderer::Resources {
         sphere_shadow(gl, "sphere shadows", shaders::kSphereVertex, shaders::kSphereShadowFragment),
         mesh(gl, "meshes", shaders::kMeshVertex, shaders::kMeshFragment),
         mesh_shadow(gl, "mesh shadows", shaders::kMeshVertex, shaders::kDepthOnlyFragment),
+        snow(gl, "snow", shaders::kMeshVertex, shaders::kSnowFragment),
         occlusion(gl, "occlusion", shaders::kCompositeVertex, screen_pass_source(shaders::kOcclusionFragment, settings)),
         composite(gl, "composite", shaders::kCompositeVertex, screen_pass_source(shaders::kCompositeFragment, settings)) {}
-  GlProgram sphere, sphere_shadow, mesh, mesh_shadow, occlusion, composite;
-  GLuint vao[3] = {};           // spheres, meshes, the empty one of the full-screen pass
-  GLuint buffers[6] = {};       // x0, x1, x2, scalar, mesh vertices, particle indices
+  GlProgram sphere, sphere_shadow, mesh, mesh_shadow, snow, occlusion, composite;
+  GLuint vao[4] = {};           // spheres, meshes, the empty one of the full-screen pass, snow
+  // x0, x1, x2, scalar, mesh vertices, particle indices, snow positions, snow normals, snow indices,
+  // snow rest positions
+  GLuint buffers[10] = {};
   GLuint framebuffers[4] = {};  // shadow, geometry (albedo, normal, depth), occlusion, final
   // shadow depth, albedo, normal (packed 0.5 n + 0.5), depth, occlusion (half size), final, colour map
   GLuint textures[7] = {};
@@ -82,8 +87,8 @@ void attach(const Gl& gl, GLuint framebuffer, std::initializer_list<GLuint> colo
 FrameRenderer::FrameRenderer(const GlContext& context, const RenderSettings& settings)
     : gl_(context.gl()), settings_(settings), r_(std::make_unique<Resources>(gl_, settings)) {
   const Gl& gl = gl_;
-  gl.glGenVertexArrays(3, r_->vao);
-  gl.glGenBuffers(6, r_->buffers);
+  gl.glGenVertexArrays(4, r_->vao);
+  gl.glGenBuffers(10, r_->buffers);
   gl.glGenFramebuffers(4, r_->framebuffers);
   const int w = settings_.width, h = settings_.height;
   GLuint* t = r_->textures;
@@ -116,8 +121,8 @@ FrameRenderer::FrameRenderer(const GlContext& context, const RenderSettings& set
 FrameRenderer::~FrameRenderer() {
   gl_.glDeleteTextures(7, r_->textures);
   gl_.glDeleteFramebuffers(4, r_->framebuffers);
-  gl_.glDeleteBuffers(6, r_->buffers);
-  gl_.glDeleteVertexArrays(3, r_->vao);
+  gl_.glDeleteBuffers(10, r_->buffers);
+  gl_.glDeleteVertexArrays(4, r_->vao);
 }
 
 Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
@@ -192,6 +197,49 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
   gl.glEnableVertexAttribArray(0);
   gl.glEnableVertexAttribArray(1);
 
+  // The snow surface and, after its vertices and triangles, its hoar crystals as closed hexagonal
+  // prisms: positions and normals uploaded as the reconstruction stores them.
+  GLsizei snow_indices = 0, crystal_indices = 0;
+  if (scene.snow) {
+    const surface::SurfaceMesh& m = *scene.snow;
+    std::vector<surface::Vec3f> crystal_positions, crystal_normals;
+    std::vector<std::uint32_t> crystal_triangles;
+    surface::append_crystal_prisms(m.crystals, crystal_positions, crystal_normals, crystal_triangles);
+    for (std::uint32_t& v : crystal_triangles) v += std::uint32_t(m.vertex_count());
+    static_assert(sizeof(surface::Vec3f) == 3 * sizeof(float), "Vec3f must be packed floats");
+    // Two arrays one after the other in `buffer`.
+    auto upload = [&](GLenum target, GLuint buffer, const void* a, std::size_t a_bytes, const void* b, std::size_t b_bytes) {
+      gl.glBindBuffer(target, buffer);
+      gl.glBufferData(target, GLsizeiptr(a_bytes + b_bytes), nullptr, GL_STREAM_DRAW);
+      gl.glBufferSubData(target, 0, GLsizeiptr(a_bytes), a);
+      gl.glBufferSubData(target, GLintptr(a_bytes), GLsizeiptr(b_bytes), b);
+    };
+    gl.glBindVertexArray(r_->vao[3]);
+    const std::size_t vec = sizeof(surface::Vec3f);
+    upload(GL_ARRAY_BUFFER, r_->buffers[6], m.positions.data(), m.positions.size() * vec, crystal_positions.data(),
+           crystal_positions.size() * vec);
+    gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    upload(GL_ARRAY_BUFFER, r_->buffers[7], m.normals.data(), m.normals.size() * vec, crystal_normals.data(),
+           crystal_normals.size() * vec);
+    gl.glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    // Rest positions seed the grains; the crystals have none (zeros).
+    const std::vector<surface::Vec3f> crystal_rest(crystal_positions.size(), surface::Vec3f{0, 0, 0});
+    upload(GL_ARRAY_BUFFER, r_->buffers[9], m.rest_positions.data(), m.rest_positions.size() * vec, crystal_rest.data(),
+           crystal_rest.size() * vec);
+    gl.glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    for (GLuint a = 0; a < 3; ++a) gl.glEnableVertexAttribArray(a);
+    const std::size_t index = sizeof(std::uint32_t);
+    upload(GL_ELEMENT_ARRAY_BUFFER, r_->buffers[8], m.triangles.data(), m.triangles.size() * index,
+           crystal_triangles.data(), crystal_triangles.size() * index);
+    snow_indices = GLsizei(m.triangles.size());
+    crystal_indices = GLsizei(crystal_triangles.size());
+  }
+  auto draw_snow = [&](GLsizei first, GLsizei count) {
+    if (count == 0) return;
+    gl.glBindVertexArray(r_->vao[3]);
+    gl.glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first * sizeof(std::uint32_t)));
+  };
+
   auto set_camera = [&](const GlProgram& p, const Mat4& view, const Mat4& projection) {
     p.use();
     p.set("view", view);
@@ -199,7 +247,7 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
     p.set("radius", float(s.sphere_radius));
   };
 
-  // 1. Shadow map: spheres (as discs) and colliders seen from the light.
+  // 1. Shadow map: spheres (as discs), colliders and snow seen from the light.
   const LightCamera light = light_camera(camera);
   const int shadow_size = r_->shadow_size;
   if (s.shadows) {
@@ -214,14 +262,15 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
     p.set("pixels_per_unit", float(0.5 * shadow_size * light.projection.at(0, 0)));
     gl.glBindVertexArray(r_->vao[0]);
     draw_particles(0, pos.count);
+    set_camera(r_->mesh_shadow, light.view, light.projection);
     if (mesh_vertices > ground_vertices) {
-      set_camera(r_->mesh_shadow, light.view, light.projection);
       gl.glBindVertexArray(r_->vao[1]);
       gl.glDrawArrays(GL_TRIANGLES, ground_vertices, mesh_vertices - ground_vertices);
     }
+    draw_snow(0, snow_indices + crystal_indices);
   }
 
-  // 2. Geometry: albedo, normal and depth of spheres, colliders and ground.
+  // 2. Geometry: albedo, normal and depth of spheres, snow, colliders and ground.
   const Mat4 view = camera.view(), projection = camera.projection();
   gl.glBindFramebuffer(GL_FRAMEBUFFER, r_->framebuffers[1]);
   gl.glViewport(0, 0, s.width, s.height);
@@ -248,6 +297,15 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
         draw_particles(range.begin, range.end);
       }
     }
+  }
+  if (snow_indices + crystal_indices > 0) {
+    const GlProgram& p = r_->snow;
+    set_camera(p, view, projection);
+    p.set("grain", float(s.snow_grain));
+    p.set("facets", 0);
+    draw_snow(0, snow_indices);
+    p.set("facets", 1);
+    draw_snow(snow_indices, crystal_indices);
   }
   if (mesh_vertices > 0) {
     const GlProgram& p = r_->mesh;

@@ -1,5 +1,5 @@
 // Draws one frame (DESIGN.md section 7): a shadow-map pass from the key light, then spheres,
-// collider meshes and the ground into a floating-point framebuffer, then a full-screen pass that
+// the snow surface, collider meshes and the ground into a floating-point framebuffer, then a full-screen pass that
 // adds ambient occlusion and the background and writes 8-bit sRGB, read back top row first.
 #pragma once
 
@@ -12,6 +12,7 @@
 #include "viz/image.hpp"
 #include "viz/render_settings.hpp"
 #include "viz/sdf_mesh.hpp"
+#include "viz/surface/surface_mesh.hpp"
 
 namespace firn::viz {
 
@@ -34,6 +35,8 @@ struct FrameScene {
   const float* scalar = nullptr;   // colour field, one value per particle
   double scalar_min = 0, scalar_max = 1;
   std::vector<TriangleMesh> colliders;
+  // The snow surface with its hoar crystals, drawn in the snow material; null: none.
+  const surface::SurfaceMesh* snow = nullptr;
 };
 
 class FrameRenderer {

@@ -66,6 +66,7 @@ namespace firn::viz {
   X(glDeleteBuffers, PFNGLDELETEBUFFERSPROC)                                      \
   X(glBindBuffer, PFNGLBINDBUFFERPROC)                                            \
   X(glBufferData, PFNGLBUFFERDATAPROC)                                            \
+  X(glBufferSubData, PFNGLBUFFERSUBDATAPROC)                                      \
   X(glVertexAttribPointer, PFNGLVERTEXATTRIBPOINTERPROC)                          \
   X(glEnableVertexAttribArray, PFNGLENABLEVERTEXATTRIBARRAYPROC)                  \
   X(glDisableVertexAttribArray, PFNGLDISABLEVERTEXATTRIBARRAYPROC)                \

@@ -17,6 +17,8 @@ struct RenderSettings {
   double fov = 0.61;                                    // vertical field of view (rad)
   std::optional<Vec3> light_direction;                  // the direction the light travels
   bool shadows = true, ambient_occlusion = true, ground = true, legend = true, cutaway = false;
+  bool subsurface = true;     // the snow surface's subsurface term (viz/shaders.cpp); off: Lambertian snow
+  double snow_grain = 0.001;  // m, the size of the grains the snow surface is shaded with
   std::optional<double> ground_height;  // default: the domain's floor
   Rgb background_top = {0.80f, 0.85f, 0.91f}, background_bottom = {0.97f, 0.97f, 0.96f};
   double particle_spacing = 0.001;  // m, of the fill lattice: dx / particles per cell per axis

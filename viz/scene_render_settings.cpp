@@ -17,6 +17,8 @@ RenderSettings scene_render_settings(const SceneSpec& scene) {
   s.ground_height = r.ground_height;
   s.legend = r.legend;
   s.cutaway = r.cutaway;
+  s.subsurface = r.subsurface;
+  s.snow_grain = r.snow_grain;
   // Radius from the particle spacing: particles sit dx / per_axis apart on the fill lattice.
   s.particle_spacing = scene.config.dx / scene.per_axis();
   s.sphere_radius = 0.5 * r.sphere_scale * s.particle_spacing;

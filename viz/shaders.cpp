@@ -76,15 +76,18 @@ void main() {
 const char* const kMeshVertex = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
+layout(location = 2) in vec3 rest_position;  // the snow surface's material coordinates; 0 elsewhere
 uniform mat4 view, projection;
 out vec3 p_view;
 out vec3 n_view;
 out vec3 p_world;
+out vec3 x0;
 void main() {
   vec4 p = view * vec4(position, 1.0);
   p_view = p.xyz;
   n_view = mat3(view) * normal;
   p_world = position;
+  x0 = rest_position;
   gl_Position = projection * p;
 }
 )";
@@ -110,6 +113,61 @@ void main() {
   float fade = fade_radius > 0.0 ? smoothstep(0.4 * fade_radius, fade_radius, length(p_world - fade_center)) : 0.0;
   albedo_gloss = vec4(albedo, 0.04);
   normal_fade = vec4(0.5 * n + 0.5, fade);
+}
+)";
+
+const char* const kSnowFragment = R"(#version 330 core
+in vec3 p_view;
+in vec3 n_view;
+in vec3 x0;
+uniform int facets;   // 1: hoar crystals, flat per facet and sparkling; 0: the snow surface
+uniform float grain;  // snow grain size in material coordinates (m)
+layout(location = 0) out vec4 albedo_gloss;
+layout(location = 1) out vec4 normal_fade;
+// PCG3D (Jarzynski and Olano 2020, "Hash functions for GPU rendering"): 3 uints -> 3 in [0, 1).
+vec3 random3(ivec3 c) {
+  uvec3 v = uvec3(c) * 1664525u + 1013904223u;
+  v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
+  v ^= v >> 16u;
+  v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
+  return vec3(v) * (1.0 / 4294967296.0);
+}
+void main() {
+  vec3 n;
+  float sparkle;
+  if (facets == 1) {
+    // A crystal's facets are flat: the normal of the triangle itself, from the screen-space
+    // derivatives of the position, not the prism's vertex normals (shared between facets).
+    n = normalize(cross(dFdx(p_view), dFdy(p_view)));
+    sparkle = 1.0;
+  } else {
+    // Grains: the cells of Worley's cellular texture (Worley 1996; one jittered feature point
+    // per cube of side `grain`, the nearest of the 27 around wins) in material coordinates, so a
+    // grain stays on its piece of snow from frame to frame and its edges follow no grid. Each
+    // grain tilts the normal by a hashed vector (a facet of its own); one in five is a facet
+    // that sparkles.
+    vec3 q = x0 / grain;
+    ivec3 base = ivec3(floor(q)), nearest = base;
+    float best = 1e9;
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          ivec3 c = base + ivec3(dx, dy, dz);
+          vec3 f = vec3(c) + random3(c) - q;
+          float d = dot(f, f);
+          if (d < best) best = d, nearest = c;
+        }
+    vec3 r = random3(nearest + ivec3(7919, 104729, 1299709));
+    n = normalize(n_view);
+    vec3 tilt = 2.0 * r - 1.0;
+    n = normalize(n + 0.15 * (tilt - dot(tilt, n) * n));
+    sparkle = r.x < 0.2 ? 0.5 : 0.0;
+  }
+  if (dot(n, p_view) > 0.0) n = -n;  // the side facing the eye
+  // The thesis' snow albedo (0.9, 0.95, 1.0), stored as its square root (the lighting pass
+  // squares colours into linear light); alpha = 0.5 + sparkle / 2 marks snow.
+  albedo_gloss = vec4(sqrt(vec3(0.9, 0.95, 1.0)), 0.5 + 0.5 * sparkle);
+  normal_fade = vec4(0.5 * n + 0.5, 0.0);
 }
 )";
 
@@ -183,6 +241,24 @@ void main() {
 // Blinn-Phong highlight and the occlusion pass's result. Then a mild Reinhard-style tone curve.
 // Colours go to linear light and back with gamma 2 (squares and square roots: far cheaper than
 // pow on llvmpipe, and close to sRGB's 2.2).
+//
+// Snow (albedo alpha >= 0.5; DESIGN.md section 7, thesis sections 4.2 and 5.3) replaces the
+// Lambert and Blinn-Phong terms by an approximate subsurface model, with a = (0.9, 0.95, 1.0):
+// - multiple scattering as wrap lighting (Green 2004, "Real-time approximations to subsurface
+//   scattering", GPU Gems ch. 16): a max(0, (n.l + w) / (1 + w)), w = 0.5, so light bleeds past
+//   the terminator and the snow's shading stays soft; the shadow map is faded out over the
+//   wrapped band (where the surface shadows itself) so the terminator shows no step;
+// - single scattering of a semi-infinite layer (Hanrahan and Krueger 1993, first-order term):
+//   a p_HG(cos t) pi n.l / (n.l + n.v) with the Henyey-Greenstein phase function
+//   p_HG = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos t)^(3/2)), g = 0.5 (the thesis' value), t the
+//   angle between the light's and the eye ray's directions of travel: snow lit from behind glows
+//   at its rim;
+// - sparkle s (alpha = 0.5 + s / 2: 1 on hoar crystal facets, 0.5 on one grain in five): the
+//   key light reflected in a tight Blinn-Phong lobe 4 s (n.h)^128 on the facet's own normal
+//   (Blinn 1977), so single grains flash; a crystal is a thin plate of ice that light crosses, so
+//   sparkling facets also take a wider wrap, w = 0.5 + s / 2 (Green's full wrap for crystals).
+// With SUBSURFACE 0 snow is plain Lambertian with the same albedo (for comparison). Snow is
+// exposed at 0.75 so that lit snow reads white without clipping to the tone curve's top.
 const char* const kCompositeFragment = R"(#version 330 core
 in vec2 uv;
 uniform sampler2D albedo_tex, normal_tex, occlusion_tex;
@@ -202,6 +278,22 @@ float lit_fraction(vec3 p, vec3 n) {
   // One bilinear comparison: the 2x2 texels around the point, weighted.
   return texture(shadow_map, vec3(s.xy, s.z - 2e-4));
 }
+vec3 snow_radiance(vec3 a, vec3 n, vec3 v, float lit, float sparkle, float nh, vec3 ambient) {
+  vec3 light = vec3(1.0, 0.97, 0.92) * 1.05;
+  float nl = dot(n, light_dir_view), nv = max(dot(n, v), 0.0);
+#if SUBSURFACE
+  const float g = 0.5;
+  float w = 0.5 + 0.5 * sparkle;
+  float wrapped = max(0.0, (nl + w) / (1.0 + w)) * mix(1.0, lit, smoothstep(-w, 0.25, nl));
+  float cos_t = dot(-light_dir_view, v), phase = (1.0 - g * g) / (4.0 * pow(1.0 + g * g - 2.0 * g * cos_t, 1.5));
+  float single = phase * max(nl, 0.0) / (max(nl, 0.0) + nv + 1e-4) * lit;
+  vec3 c = a * light * wrapped + a * light * single + a * ambient;
+#else
+  vec3 c = a * (light * max(nl, 0.0) * lit + ambient);
+#endif
+  c += vec3(4.0 * sparkle * pow(nh, 128.0) * lit * step(0.0, nl));
+  return c;
+}
 void main() {
   vec3 background = mix(background_bottom, background_top, uv.y);
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -218,8 +310,13 @@ void main() {
   vec3 ambient = mix(vec3(0.16, 0.15, 0.14), vec3(0.30, 0.34, 0.42), 0.5 + 0.5 * dot(n, up_view));
   vec3 h = normalize(light_dir_view + normalize(-p));
   float s1 = max(dot(n, h), 0.0), s3 = s1 * s1 * s1, s6 = s3 * s3, s12 = s6 * s6, s24 = s12 * s12;
-  float spec = ag.a * s24 * s24 * lit;  // (n . h)^48 by multiplications, cheaper than pow()
-  vec3 c = albedo * (vec3(1.0, 0.97, 0.92) * 1.05 * diffuse + ambient) + vec3(spec);
+  vec3 c;
+  if (ag.a < 0.5) {
+    float spec = ag.a * s24 * s24 * lit;  // (n . h)^48 by multiplications, cheaper than pow()
+    c = albedo * (vec3(1.0, 0.97, 0.92) * 1.05 * diffuse + ambient) + vec3(spec);
+  } else {
+    c = 0.75 * snow_radiance(albedo, n, normalize(-p), lit, 2.0 * ag.a - 1.0, s1, ambient);
+  }
 #if AMBIENT_OCCLUSION
   c *= texture(occlusion_tex, uv).r;
 #endif

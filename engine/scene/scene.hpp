@@ -89,6 +89,8 @@ struct RenderSpec {
   bool shadows = true, ambient_occlusion = true, ground = true, legend = true, cutaway = false;
   std::optional<double> ground_height;  // default: the domain's floor
   double sphere_scale = 1.2;            // sphere diameter in particle spacings
+  bool subsurface = true;               // snow surfaces: the subsurface scattering term
+  double snow_grain = 0.001;            // snow surfaces: grain size (m)
   std::vector<std::optional<Point>> material_colors;  // per material ([materials.NAME] color)
 };
 

@@ -740,6 +740,8 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
     s.render.legend = r.boolean("legend");
     s.render.cutaway = r.boolean("cutaway");
     s.render.sphere_scale = r.number("sphere_scale");
+    s.render.subsurface = r.boolean("subsurface");
+    s.render.snow_grain = r.number("snow_grain");
     r.finish();
     out.insert("render", std::move(ro));
   }

@@ -273,6 +273,12 @@ std::vector<SectionSpec> build_schema() {
                     "nearest the view direction, showing the inside (e.g. a snowball's layers)"},
                    {"sphere_scale", K::number, Q::dimensionless, "1.2", false,
                     "sphere diameter in particle spacings (dx / cube root of particles_per_cell)", 0, 10, true},
+                   {"subsurface", K::boolean, Q::dimensionless, "true", false,
+                    "--render surface: shade snow with the approximate subsurface scattering term (wrap lighting and "
+                    "Henyey-Greenstein single scattering); false: Lambertian snow"},
+                   {"snow_grain", K::number, Q::length, "0.001", false,
+                    "--render surface: size of the snow grains (cells in material coordinates, each with its own "
+                    "facet tilt, one in five sparkling)", 0, 0.1, true},
                }});
   return s;
 }
