@@ -10,11 +10,9 @@ EGL the run falls back to OSMesa.
 """
 import glob
 import os
-import shutil
 import subprocess
-import sys
 
-FIRN, ROOT, SCRATCH, TEST = sys.argv[1:5]
+from end_to_end import FIRN, ROOT, SCRATCH, TEST, check, fresh
 SCENE = os.path.join(ROOT, "scenes", "snowball_pair.toml")
 SMALL = ["--preview", "--set", "simulation.end_time=2 ms", "--set", "render.width=320", "--set", "render.height=180"]
 
@@ -23,15 +21,6 @@ def run(args, env=None):
     return subprocess.run([FIRN] + args, capture_output=True, text=True, env=env)
 
 
-def check(cond, message):
-    if not cond:
-        sys.exit("FAIL: " + message)
-
-
-def fresh(name):
-    path = os.path.join(SCRATCH, name)
-    shutil.rmtree(path, ignore_errors=True)
-    return path
 
 
 def png_size(path):
