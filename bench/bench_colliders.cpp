@@ -16,14 +16,7 @@ namespace firn {
 namespace {
 
 void BM_TireDistance(benchmark::State& state, const std::string& tread) {
-  const TireShape<double> d = make_tire_shape(tread, 0.2, 0.125, 0.012, 12);
-  TireShape<float> t;  // the engine's default precision
-  t.radius = float(d.radius), t.width = float(d.width), t.tread_depth = float(d.tread_depth);
-  t.pitches = d.pitches, t.block_count = d.block_count;
-  for (int b = 0; b < d.block_count; ++b) {
-    t.blocks[b].vertex_count = d.blocks[b].vertex_count;
-    for (int v = 0; v < kMaxBlockVertices; ++v) t.blocks[b].u[v] = float(d.blocks[b].u[v]), t.blocks[b].w[v] = float(d.blocks[b].w[v]);
-  }
+  const TireShape<float> t = tire_shape_cast<float>(make_tire_shape(tread, 0.2, 0.125, 0.012, 12));  // engine default precision
   std::mt19937 rng(1);
   std::uniform_real_distribution<float> phi(0, 6.2831853f), r(0.176f, 0.224f), z(-0.0625f, 0.0625f);
   std::vector<float> points;

@@ -373,6 +373,8 @@ class Simulation {
   std::size_t material_count() const { return materials_.size(); }
   // det of the whole deformation gradient F_E F_P of the particle at physical index p.
   static T total_J(const ParticleView<T>& pv, std::size_t p) { return particle_total_J(pv, p); }
+  // The physical indices [begin, end) of material m's particles (valid after prepare()).
+  ParticleRange material_range(int m) const { return materials_[std::size_t(m)].range; }
   // Material index of the particle at physical index p (valid after prepare()).
   int material_of(std::size_t p) const {
     for (std::size_t m = 0; m < materials_.size(); ++m)

@@ -144,18 +144,7 @@ Collider<T> collider_cast(const Collider<U>& c) {
   }
   for (int i = 0; i < 9; ++i) o.rotation[i] = T(c.rotation[i]);
   o.radius = T(c.radius);
-  o.tire.radius = T(c.tire.radius);
-  o.tire.width = T(c.tire.width);
-  o.tire.tread_depth = T(c.tire.tread_depth);
-  o.tire.pitches = c.tire.pitches;
-  o.tire.block_count = c.tire.block_count;
-  for (int b = 0; b < kMaxTreadBlocks; ++b) {
-    o.tire.blocks[b].vertex_count = c.tire.blocks[b].vertex_count;
-    for (int v = 0; v < kMaxBlockVertices; ++v) {
-      o.tire.blocks[b].u[v] = T(c.tire.blocks[b].u[v]);
-      o.tire.blocks[b].w[v] = T(c.tire.blocks[b].w[v]);
-    }
-  }
+  o.tire = tire_shape_cast<T>(c.tire);
   return o;
 }
 

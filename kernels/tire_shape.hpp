@@ -142,4 +142,23 @@ struct TireShape {
   }
 };
 
+// The same tire in another precision.
+template <class T, class U>
+TireShape<T> tire_shape_cast(const TireShape<U>& t) {
+  TireShape<T> o;
+  o.radius = T(t.radius);
+  o.width = T(t.width);
+  o.tread_depth = T(t.tread_depth);
+  o.pitches = t.pitches;
+  o.block_count = t.block_count;
+  for (int b = 0; b < kMaxTreadBlocks; ++b) {
+    o.blocks[b].vertex_count = t.blocks[b].vertex_count;
+    for (int v = 0; v < kMaxBlockVertices; ++v) {
+      o.blocks[b].u[v] = T(t.blocks[b].u[v]);
+      o.blocks[b].w[v] = T(t.blocks[b].w[v]);
+    }
+  }
+  return o;
+}
+
 }  // namespace firn

@@ -10,12 +10,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #include <stb/stb_image.h>
 
+#include "apps/sweep/child_process.hpp"
 #include "engine/output/vtp_writer.hpp"
 #include "engine/particle_storage.hpp"
 #include "engine/scene/scene_builder.hpp"
@@ -286,17 +289,16 @@ TEST(PngWriter, RoundTripsEveryPixel) {
   EXPECT_EQ(load_png(path).rgb, image.rgb);
 }
 
+// ffprobe's report on the video, started from an argument vector (never a shell).
 std::string run_ffprobe(const std::string& video) {
-  // Fixed arguments and a path we made: no user input reaches the shell.
-  const std::string command = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                              "stream=codec_name,pix_fmt,width,height,nb_read_frames -of default=nw=1 '" + video + "'";
-  std::string out;
-  if (FILE* p = ::popen(command.c_str(), "r")) {
-    char buf[256];
-    while (std::fgets(buf, sizeof buf, p)) out += buf;
-    ::pclose(p);
-  }
-  return out;
+  sweep::ChildSpec probe;
+  probe.argv = {"ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                "stream=codec_name,pix_fmt,width,height,nb_read_frames", "-of", "default=nw=1", video};
+  probe.log_path = video + ".ffprobe.txt";
+  probe.search_path = true;
+  sweep::wait_child(sweep::start_child(probe));
+  std::ifstream log(probe.log_path);
+  return std::string(std::istreambuf_iterator<char>(log), std::istreambuf_iterator<char>());
 }
 
 TEST(FfmpegPipe, EncodesH264Yuv420pOneFramePerImage) {

@@ -22,14 +22,12 @@ struct SplitMix64 {
 
 // A rotation whose body y axis is the unit vector n (the other two axes complete a right-handed frame).
 void frame_with_y_axis(const Point& n, double r[9]) {
-  const Point a = std::fabs(n[0]) < 0.9 ? Point{1, 0, 0} : Point{0, 0, 1};
-  Point x = {a[1] * n[2] - a[2] * n[1], a[2] * n[0] - a[0] * n[2], a[0] * n[1] - a[1] * n[0]};  // a x n
-  const double len = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-  for (double& c : x) c /= len;
-  const Point z = {x[1] * n[2] - x[2] * n[1], x[2] * n[0] - x[0] * n[2], x[0] * n[1] - x[1] * n[0]};  // x x n
+  const Vec3<double> y = {{n[0], n[1], n[2]}};
+  const Vec3<double> a = std::fabs(n[0]) < 0.9 ? Vec3<double>{{1, 0, 0}} : Vec3<double>{{0, 0, 1}};
+  const Vec3<double> c = cross(a, y), x = (1 / norm(c)) * c, z = cross(x, y);
   for (int i = 0; i < 3; ++i) {
     r[3 * i + 0] = x[i];
-    r[3 * i + 1] = n[i];
+    r[3 * i + 1] = y[i];
     r[3 * i + 2] = z[i];
   }
 }

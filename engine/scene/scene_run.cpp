@@ -25,8 +25,6 @@ std::string frame_name(int frame) {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// Particles are grouped by material (DESIGN.md section 2, rule 5), so material_of is
-// non-decreasing in the physical index: each material's span ends where a binary search says.
 template <class T, class Backend>
 FrameDescription describe_frame(const Simulation<T, Backend>& sim, const ParticleView<T>& view, int frame,
                                 const std::vector<Collider<double>>& colliders) {
@@ -35,16 +33,9 @@ FrameDescription describe_frame(const Simulation<T, Backend>& sim, const Particl
   f.time = sim.time();
   if constexpr (std::is_same_v<T, float>) f.particles_float = &view;
   else f.particles_double = &view;
-  std::size_t begin = 0;
   for (int m = 0; m < int(sim.material_count()); ++m) {
-    std::size_t lo = begin, hi = view.n;
-    while (lo < hi) {
-      const std::size_t mid = lo + (hi - lo) / 2;
-      if (sim.material_of(mid) <= m) lo = mid + 1;
-      else hi = mid;
-    }
-    f.materials.push_back({begin, lo, m});
-    begin = lo;
+    const ParticleRange r = sim.material_range(m);
+    f.materials.push_back({r.begin, r.end, m});
   }
   f.colliders = &colliders;
   return f;
