@@ -22,6 +22,7 @@
 #include "apps/commands.hpp"
 #include "apps/sweep/child_process.hpp"
 #include "apps/sweep/combinations.hpp"
+#include "apps/sweep/gnuplot.hpp"
 #include "apps/sweep/metric_plot.hpp"
 #include "apps/sweep/sweep_table.hpp"
 #include "engine/output/atomic_file.hpp"
@@ -235,18 +236,12 @@ class Sweep {
     for (const std::string& metric : plotted_metrics) {
       const auto plot = metric_plot(metric, plan_.keys, runs);
       if (!plot) continue;
-      std::filesystem::create_directories(dir);
-      write_file_atomically(dir + "/" + metric + ".dat", plot->data);
-      write_file_atomically(dir + "/" + metric + ".gp", plot->script);
-      const std::string log = dir + "/" + metric + ".log";
-      const int status = wait_child(start_child({{"gnuplot", metric + ".gp"}, log, dir, true}));
-      if (status == 127) {
+      const PlotStatus status = draw_plot(dir, metric, plot->data, plot->script);
+      if (status == PlotStatus::no_gnuplot) {
         std::fprintf(stderr, "firn sweep: gnuplot not found (Debian package gnuplot-nox): no plots\n");
         return;
       }
-      std::error_code ec;
-      if (status == 0 && std::filesystem::file_size(log, ec) == 0) std::filesystem::remove(log, ec);
-      if (status != 0)
+      if (status == PlotStatus::failed)
         std::fprintf(stderr, "firn sweep: gnuplot failed on %s/%s.gp (see %s.log)\n", dir.c_str(), metric.c_str(),
                      metric.c_str());
     }

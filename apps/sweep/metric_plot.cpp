@@ -5,16 +5,10 @@
 #include <limits>
 
 #include "apps/sweep/csv.hpp"
+#include "apps/sweep/gnuplot.hpp"
 
 namespace firn::sweep {
 namespace {
-
-// A gnuplot single-quoted string: only the quote itself needs escaping, by doubling it.
-std::string quoted(const std::string& text) {
-  std::string s = "'";
-  for (const char c : text) s += c == '\'' ? std::string("''") : std::string(1, c);
-  return s + "'";
-}
 
 struct Curve {
   std::string title;
@@ -57,12 +51,9 @@ std::optional<MetricPlot> metric_plot(const std::string& metric, const std::vect
   s = "# " + metric + " against time for every run of the sweep: one panel per value of " + keys[0].key +
       ", one curve per\n# combination of the other varied keys. Data: " + metric +
       ".dat. Re-plot from this folder with: gnuplot " + metric + ".gp\n";
-  const std::string size = " noenhanced size " + std::to_string(520 * cols) + "," + std::to_string(440 * rows);
-  s += "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n  set terminal pngcairo" + size +
-       "\n} else {\n  set terminal png" + size + "\n}\n";
-  s += "set output " + quoted(metric + ".png") + "\n";
-  s += "set multiplot layout " + std::to_string(rows) + "," + std::to_string(cols) + " title " + quoted(metric) + "\n";
-  s += "set xlabel 'time (s)'\nset ylabel " + quoted(metric) + "\nset key below\nset grid\n";
+  s += gnuplot_png_output(metric + ".png", int(520 * cols), int(440 * rows));
+  s += "set multiplot layout " + std::to_string(rows) + "," + std::to_string(cols) + " title " + gnuplot_quoted(metric) + "\n";
+  s += "set xlabel 'time (s)'\nset ylabel " + gnuplot_quoted(metric) + "\nset key below\nset grid\n";
   // Every panel on the same axes; the margins keep %.6g rounding from clipping a point.
   if (t_hi > t_lo)
     s += "set xrange [" + csv_number(t_lo - 0.001 * (t_hi - t_lo)) + ":" + csv_number(t_hi + 0.001 * (t_hi - t_lo)) +
@@ -72,15 +63,15 @@ std::optional<MetricPlot> metric_plot(const std::string& metric, const std::vect
   int block = 0;
   for (std::size_t p = 0; p < panels.size(); ++p) {
     if (panels[p].empty()) continue;
-    s += "set title " + quoted(keys[0].key + " = " + keys[0].values[p]) + "\nplot ";
+    s += "set title " + gnuplot_quoted(keys[0].key + " = " + keys[0].values[p]) + "\nplot ";
     // gnuplot's default colours repeat after eight; later curves change the dash pattern instead.
     constexpr std::size_t kColours = 8;
     for (std::size_t i = 0; i < panels[p].size(); ++i) {
       const Curve& curve = panels[p][i];
       if (block > 0) plot.data += "\n\n";  // gnuplot's data-set separator: two blank lines
-      s += (i ? ", \\\n     " : "") + quoted(metric + ".dat") + " index " + std::to_string(block++) +
+      s += (i ? ", \\\n     " : "") + gnuplot_quoted(metric + ".dat") + " index " + std::to_string(block++) +
            " using 1:2 with lines linewidth 2 linecolor " + std::to_string(i % kColours + 1) + " dashtype " +
-           std::to_string(i / kColours + 1) + " " + (curve.title.empty() ? "notitle" : "title " + quoted(curve.title));
+           std::to_string(i / kColours + 1) + " " + (curve.title.empty() ? "notitle" : "title " + gnuplot_quoted(curve.title));
       plot.data +=
           "# " + keys[0].key + " = " + keys[0].values[p] + (curve.title.empty() ? "" : ", ") + curve.title + "\n";
       for (const auto& [time, value] : curve.points) plot.data += csv_number(time) + " " + csv_number(value) + "\n";
