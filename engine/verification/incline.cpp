@@ -14,29 +14,30 @@ namespace {
 // velocities best in the mass-weighted least-squares sense:
 //   omega_z = sum m (r_x v_y - r_y v_x) / sum m (r_x^2 + r_y^2),  r = x - x_com,
 // i.e. the angular momentum about the centre of mass over the moment of inertia (plane motion).
-void planar_motion(const ParticleView<double>& pv, double& velocity_x, double& omega_z) {
+template <class T>
+void planar_motion(const ParticleView<T>& pv, double& velocity_x, double& omega_z) {
   double m = 0, x[2] = {0, 0}, v = 0;
   for (std::size_t p = 0; p < pv.n; ++p) {
-    m += pv.mass[p];
-    x[0] += pv.mass[p] * pv.x[0][p];
-    x[1] += pv.mass[p] * pv.x[1][p];
-    v += pv.mass[p] * pv.v[0][p];
+    const double mp = pv.mass[p];
+    m += mp;
+    x[0] += mp * double(pv.x[0][p]);
+    x[1] += mp * double(pv.x[1][p]);
+    v += mp * double(pv.v[0][p]);
   }
   x[0] /= m;
   x[1] /= m;
   double angular = 0, inertia = 0;
   for (std::size_t p = 0; p < pv.n; ++p) {
-    const double rx = pv.x[0][p] - x[0], ry = pv.x[1][p] - x[1];
-    angular += pv.mass[p] * (rx * pv.v[1][p] - ry * pv.v[0][p]);
-    inertia += pv.mass[p] * (rx * rx + ry * ry);
+    const double mp = pv.mass[p], rx = double(pv.x[0][p]) - x[0], ry = double(pv.x[1][p]) - x[1];
+    angular += mp * (rx * double(pv.v[1][p]) - ry * double(pv.v[0][p]));
+    inertia += mp * (rx * rx + ry * ry);
   }
   velocity_x = v / m;
   omega_z = angular / inertia;
 }
 
-}  // namespace
-
-InclineHistory run_incline(const InclineRun& run, const VerificationOptions& options) {
+template <class T>
+InclineHistory run_incline_in(const InclineRun& run, const VerificationOptions& options) {
   const double dx = run.dx, h = dx / run.per_cell;
   SimulationConfig c;
   c.domain_min = {-3 * dx, -3 * dx, -2 * dx};
@@ -45,11 +46,13 @@ InclineHistory run_incline(const InclineRun& run, const VerificationOptions& opt
   c.gravity = {0, 0, 0};  // applied as a body acceleration, eased in
   c.cfl = 0.4;
   c.dt_max = run.end_time;
+  c.transfer = run.method.transfer;
+  c.shape = run.method.shape;
   for (auto& wall : c.walls) wall = {WallType::none, 0, 0};
   c.walls[4] = c.walls[5] = {WallType::slip, 3, 0};  // nodes z = -2dx..0 and dx..3dx: all of them
   backend::OpenMP omp;
   if (options.threads > 0) omp.thread_count = options.threads;
-  Simulation<double, backend::OpenMP> sim(c, omp);
+  Simulation<T, backend::OpenMP> sim(c, omp);
   const int body = sim.add_material(run.material);
   sim.add_particles(body,
                     fill_lattice(c.domain_min, dx, run.per_cell, {0, 0, 0}, {run.body_max[0], run.body_max[1], dx},
@@ -70,10 +73,10 @@ InclineHistory run_incline(const InclineRun& run, const VerificationOptions& opt
     const double dt = std::min(sim.next_dt(), run.end_time - sim.time());
     const double t = sim.time() + dt / 2;
     const double ease = t < run.ramp ? (1 - std::cos(M_PI * t / run.ramp)) / 2 : 1;
-    ParticleView<double> pv = sim.particles();
+    ParticleView<T> pv = sim.particles();
     for (std::size_t p = 0; p < pv.n; ++p) {
-      pv.body_accel[0][p] = ease * g[0];
-      pv.body_accel[1][p] = ease * g[1];
+      pv.body_accel[0][p] = T(ease * g[0]);
+      pv.body_accel[1][p] = T(ease * g[1]);
     }
     sim.step(dt);
     double v = 0, omega_z = 0;
@@ -84,7 +87,14 @@ InclineHistory run_incline(const InclineRun& run, const VerificationOptions& opt
   }
   history.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   history.steps = sim.steps();
+  history.particles = sim.particle_count();
   return history;
+}
+
+}  // namespace
+
+InclineHistory run_incline(const InclineRun& run, const VerificationOptions& options) {
+  return with_precision(run.method, [&](auto scalar) { return run_incline_in<decltype(scalar)>(run, options); });
 }
 
 }  // namespace firn

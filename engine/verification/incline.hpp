@@ -32,6 +32,7 @@ struct InclineRun {
   double travel = 0;     // room down the slope beyond body_max[0] (m)
   double ramp = 0;       // gravity eased in over this time (s)
   double end_time = 0;
+  VerificationMethod method;
 };
 
 // Motion of the body's centre of mass, one sample per step.
@@ -40,6 +41,7 @@ struct InclineHistory {
   std::vector<double> velocity;  // down the slope (m/s)
   std::vector<double> spin;      // angular velocity about -z, positive when rolling down (rad/s)
   long steps = 0;
+  std::size_t particles = 0;
   double seconds = 0;  // wall time of the steps
 };
 

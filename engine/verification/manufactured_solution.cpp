@@ -45,53 +45,68 @@ struct Manufactured {
   }
 };
 
-}  // namespace
-
-std::vector<VerificationRow> verify_manufactured_solution(const VerificationOptions& options) {
+template <class T>
+VerificationCase run_manufactured(int level, const VerificationMethod& method, const VerificationOptions& options) {
   const Manufactured ms;
   const double end_time = 1 / ms.c;  // half a period of sin(c pi t)
-  const double level_bound = 0.05;   // RMS error below 5% of the amplitude at every level
+  const int cells = 8 << level, per_cell = 2 + level;
+  const double dx = 1.0 / cells, h = dx / per_cell, width = 4 * dx;
+  SimulationConfig c;
+  c.domain_min = {-2 * dx, -2 * dx, -2 * dx};
+  c.domain_max = {1 + 2 * dx, width + 2 * dx, width + 2 * dx};
+  c.dx = dx;
+  c.gravity = {0, 0, 0};
+  c.cfl = 0.2;
+  c.dt_max = end_time;
+  c.transfer = method.transfer;
+  c.shape = method.shape;
+  c.walls[0] = c.walls[1] = {WallType::sticky, 3, 0};  // nodes at X <= 0 and X >= 1
+  for (int f = 2; f < 6; ++f) c.walls[f] = {WallType::slip, 4, 0};  // nodes within dx of a lateral face
+  backend::OpenMP omp;
+  if (options.threads > 0) omp.thread_count = options.threads;
+  Simulation<T, backend::OpenMP> sim(c, omp);
+  const int m = sim.add_material({"solid", "neo_hookean", ms.rho0, ms.moduli});
+  sim.add_particles(m, fill_box(c.domain_min, dx, per_cell, {0, 0, 0}, {1, width, width}), {0, 0, 0}, h * h * h);
+  sim.enable(Attribute::x0);
+  sim.enable(Attribute::body_accel);
+  sim.prepare();
+  ParticleView<T> pv = sim.particles();
+  for (std::size_t p = 0; p < pv.n; ++p) pv.v[0][p] = T(ms.velocity(pv.x0[0][p], 0));
+
+  const auto t0 = std::chrono::steady_clock::now();
+  double error = 0;
+  while (sim.time() < end_time * (1 - 1e-12)) {
+    pv = sim.particles();
+    for (std::size_t p = 0; p < pv.n; ++p) pv.body_accel[0][p] = T(ms.body_accel(pv.x0[0][p], sim.time()));
+    sim.step(std::min(sim.next_dt(), end_time - sim.time()));
+    pv = sim.particles();
+    double sum = 0;
+    for (std::size_t p = 0; p < pv.n; ++p) {
+      double e[3];
+      for (int d = 0; d < 3; ++d) e[d] = double(pv.x[d][p]) - double(pv.x0[d][p]);
+      e[0] -= ms.u(pv.x0[0][p], sim.time());
+      sum += e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+    }
+    error = std::max(error, std::sqrt(sum / double(pv.n)) / ms.A);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return {dx, per_cell, sim.particle_count(), sim.steps(), error, seconds};
+}
+
+}  // namespace
+
+VerificationCase manufactured_solution_case(int level, const VerificationMethod& method,
+                                            const VerificationOptions& options) {
+  return with_precision(method, [&](auto scalar) { return run_manufactured<decltype(scalar)>(level, method, options); });
+}
+
+std::vector<VerificationRow> verify_manufactured_solution(const VerificationOptions& options) {
+  const double level_bound = 0.05;  // RMS error below 5% of the amplitude at every level
   std::vector<VerificationRow> rows;
   for (int level = 0; level < 3; ++level) {
-    const int cells = 8 << level, per_cell = 2 + level;
-    const double dx = 1.0 / cells, h = dx / per_cell, width = 4 * dx;
-    SimulationConfig c;
-    c.domain_min = {-2 * dx, -2 * dx, -2 * dx};
-    c.domain_max = {1 + 2 * dx, width + 2 * dx, width + 2 * dx};
-    c.dx = dx;
-    c.gravity = {0, 0, 0};
-    c.cfl = 0.2;
-    c.dt_max = end_time;
-    c.walls[0] = c.walls[1] = {WallType::sticky, 3, 0};  // nodes at X <= 0 and X >= 1
-    for (int f = 2; f < 6; ++f) c.walls[f] = {WallType::slip, 4, 0};  // nodes within dx of a lateral face
-    backend::OpenMP omp;
-    if (options.threads > 0) omp.thread_count = options.threads;
-    Simulation<double, backend::OpenMP> sim(c, omp);
-    const int m = sim.add_material({"solid", "neo_hookean", ms.rho0, ms.moduli});
-    sim.add_particles(m, fill_box(c.domain_min, dx, per_cell, {0, 0, 0}, {1, width, width}), {0, 0, 0}, h * h * h);
-    sim.enable(Attribute::x0);
-    sim.enable(Attribute::body_accel);
-    sim.prepare();
-    ParticleView<double> pv = sim.particles();
-    for (std::size_t p = 0; p < pv.n; ++p) pv.v[0][p] = ms.velocity(pv.x0[0][p], 0);
-
-    const auto t0 = std::chrono::steady_clock::now();
-    double error = 0;
-    while (sim.time() < end_time * (1 - 1e-12)) {
-      pv = sim.particles();
-      for (std::size_t p = 0; p < pv.n; ++p) pv.body_accel[0][p] = ms.body_accel(pv.x0[0][p], sim.time());
-      sim.step(std::min(sim.next_dt(), end_time - sim.time()));
-      pv = sim.particles();
-      double sum = 0;
-      for (std::size_t p = 0; p < pv.n; ++p) {
-        const double e = pv.x[0][p] - pv.x0[0][p] - ms.u(pv.x0[0][p], sim.time());
-        sum += e * e + (pv.x[1][p] - pv.x0[1][p]) * (pv.x[1][p] - pv.x0[1][p]) +
-               (pv.x[2][p] - pv.x0[2][p]) * (pv.x[2][p] - pv.x0[2][p]);
-      }
-      error = std::max(error, std::sqrt(sum / double(pv.n)) / ms.A);
-    }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    rows.push_back({"manufactured_solution", level, dx, per_cell, sim.steps(), error, level_bound, seconds});
+    const VerificationCase r = manufactured_solution_case(level, {}, options);
+    rows.push_back({"manufactured_solution", level, r.dx, r.particles_per_cell, r.steps, r.error, level_bound, r.seconds,
+                    r.particles});
   }
   const VerificationRow& a = rows[rows.size() - 2];
   const VerificationRow& b = rows.back();
