@@ -11,7 +11,11 @@ void add_verify_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
+void add_study_command(CLI::App& app);
 void add_help_command(CLI::App& app);
+
+// Sub-commands of `firn study`.
+void add_study_accuracy_command(CLI::App& study);
 
 // Exit status of the command that ran (0: success, 1: a check or the run failed, 2: bad input,
 // 130: interrupted).

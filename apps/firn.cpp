@@ -36,11 +36,13 @@ int main(int argc, char** argv) {
   firn::app::add_render_command(app);
   firn::app::add_check_command(app);
   firn::app::add_sweep_command(app);
+  firn::app::add_study_command(app);
   firn::app::add_help_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    const int status = app.exit(e);  // prints help, the version or the error
+    return status == 0 ? 0 : 2;       // every command-line mistake is bad input (commands.hpp)
   }
   return firn::app::exit_status();
 }

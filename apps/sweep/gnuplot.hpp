@@ -13,6 +13,12 @@ std::string gnuplot_quoted(const std::string& text);
 // pixels, and set the output to `png_name`.
 std::string gnuplot_png_output(const std::string& png_name, int width, int height);
 
+// A plot's data file and the script that draws it.
+struct PlotFiles {
+  std::string data;
+  std::string script;
+};
+
 enum class PlotStatus { drawn, no_gnuplot, failed };
 
 // Writes DIR/NAME.dat and DIR/NAME.gp, then runs `gnuplot NAME.gp` in DIR (started from an argument
