@@ -1,6 +1,9 @@
 // firn bench step [--problem NAME] [--steps N] [--threads N] [--precision float|double]
+//                 [--transfer apic|pic|flip] [--domain-scale S] [--enable ATTR]... [--idle-materials N]
 // Times the step loop alone (setup excluded) and prints particles, steps,
-// particle_steps_per_second and state_hash, plus threads, seconds and memory.
+// particle_steps_per_second and state_hash, plus threads, seconds and memory. --domain-scale,
+// --enable and --idle-materials add what the problem does not need (empty grid, attributes nobody
+// reads, materials without particles) to measure what skipping them saves (docs/performance.md).
 // firn bench surface [--particles N] [--threads N] [--repeats N]
 // Times the snow surface reconstruction of a synthetic snow block; prints particles_per_second and
 // checks that the mesh is a closed manifold (outside the timing).
@@ -10,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <stdexcept>
 #include <random>
 #include <string>
 #include <vector>
@@ -32,22 +36,44 @@ struct BenchStepOptions {
   int steps = 100;
   int threads = 0;  // 0: all cores
   std::string precision = "float";
+  std::string transfer = "apic";
   double domain_scale = 1;
+  std::vector<std::string> enable;  // on_demand attributes to allocate although nothing reads them
+  int idle_materials = 0;           // extra materials with no particles
 };
+
+Transfer transfer_named(const std::string& name) {
+  return name == "pic" ? Transfer::pic : name == "flip" ? Transfer::flip : Transfer::apic;
+}
+
+Attribute attribute_named(const std::string& name) {
+#define FIRN_ATTRIBUTE_NAMED(attribute, n, kind, alloc, doc) \
+  if (name == #attribute) return Attribute::attribute;
+  FIRN_PARTICLE_ATTRIBUTES(FIRN_ATTRIBUTE_NAMED)
+#undef FIRN_ATTRIBUTE_NAMED
+  throw std::invalid_argument("unknown attribute " + name);
+}
 
 template <class T>
 void bench_step(const BenchStepOptions& o) {
   backend::OpenMP omp;
   if (o.threads > 0) omp.thread_count = o.threads;
-  Simulation<T, backend::OpenMP> sim(cube_drop_config(o.domain_scale), omp);
+  SimulationConfig config = cube_drop_config(o.domain_scale);
+  config.transfer = transfer_named(o.transfer);
+  Simulation<T, backend::OpenMP> sim(config, omp);
   add_cube_drop_particles(sim);
+  for (int m = 0; m < o.idle_materials; ++m)
+    sim.add_material({"idle" + std::to_string(m), "neo_hookean", 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
+  for (const std::string& name : o.enable) sim.enable(attribute_named(name));
   sim.prepare();
   const auto t0 = std::chrono::steady_clock::now();
   for (int s = 0; s < o.steps; ++s) sim.step();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double rate = double(sim.particle_count()) * o.steps / seconds;
-  std::printf("problem %s\nprecision %s\nthreads %d\nparticles %zu\nsteps %d\nseconds %.4f\n", o.problem.c_str(),
-              o.precision.c_str(), omp.threads(), sim.particle_count(), o.steps, seconds);
+  std::printf("problem %s\nprecision %s\ntransfer %s\nthreads %d\nparticles %zu\nbytes_per_particle %zu\nsteps %d\n"
+              "seconds %.4f\n",
+              o.problem.c_str(), o.precision.c_str(), o.transfer.c_str(), omp.threads(), sim.particle_count(),
+              sim.bytes_per_particle(), o.steps, seconds);
   std::printf("grid_blocks_active %zu\ngrid_memory_mb %.2f\n", sim.grid().active_count(),
               sim.grid().memory_bytes() / 1048576.0);
   std::printf("particle_steps_per_second %.0f\nstate_hash %016" PRIx64 "\n", rate, sim.state_hash());
@@ -126,6 +152,12 @@ void add_bench_command(CLI::App& app) {
   step->add_option("--threads", opts->threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
   step->add_option("--precision", opts->precision, "float or double")->check(CLI::IsMember({"float", "double"}))
       ->capture_default_str();
+  step->add_option("--transfer", opts->transfer, "transfer scheme")->check(CLI::IsMember({"apic", "pic", "flip"}))
+      ->capture_default_str();
+  step->add_option("--enable", opts->enable, "allocate an on-demand attribute nothing reads (to measure the skip)")
+      ->check(CLI::IsMember({"x0", "alpha", "Jp", "body_accel", "load"}));
+  step->add_option("--idle-materials", opts->idle_materials, "add materials without particles (to measure the skip)")
+      ->check(CLI::Range(0, 64))->capture_default_str();
   step->add_option("--domain-scale", opts->domain_scale,
                    "scale the domain box (same particles) to show that cost follows the particles")
       ->check(CLI::Range(1.0, 16.0))->capture_default_str();

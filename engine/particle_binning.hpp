@@ -1,5 +1,7 @@
 // Bins particles by (material, grid block of their stencil base node) with a stable counting
 // sort, so that P2G and G2P can walk the particles block by block (DESIGN.md section 2, rule 7).
+// Only materials that have particles get buckets: the sort's cost grows with materials x blocks, so
+// a material declared but absent would cost as much as one present (docs/performance.md).
 // The sort is stable on the physical index, so its result is unique and independent of the thread
 // count. The particle arrays themselves are reordered only when the walk has become scattered
 // (see needs_reorder), since most steps move few particles across a block boundary.
@@ -26,18 +28,20 @@ class ParticleBinning {
   static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
   // Computes every particle's key; returns the first particle whose stencil leaves the grid (or
-  // that is not finite), or kNone. `materials` are the contiguous material ranges.
+  // that is not finite), or kNone. `materials` are the contiguous material ranges; bucket index m
+  // counts only the non-empty ones.
   template <class ShapeT, class T, class Backend>
   std::size_t compute_keys(const ParticleView<T>& pv, const std::vector<ParticleRange>& materials,
                            const GridGeometry<T>& g, const int blocks[3], const Backend& backend) {
     keys_.resize(pv.n);
     block_count_ = std::size_t(blocks[0]) * blocks[1] * blocks[2];
-    material_count_ = materials.size();
+    material_count_ = 0;
     std::uint32_t* keys = keys_.data();
     std::size_t first_bad = kNone;
     for (std::size_t m = 0; m < materials.size(); ++m) {
+      if (materials[m].end == materials[m].begin) continue;
       const std::size_t begin = materials[m].begin;
-      const std::uint32_t key0 = std::uint32_t(m * block_count_);
+      const std::uint32_t key0 = std::uint32_t(material_count_++ * block_count_);
       const int b1 = blocks[1], b2 = blocks[2];
       const std::size_t bad = backend.parallel_reduce(
           "bin.keys", materials[m].end - begin, kNone,
@@ -115,10 +119,11 @@ class ParticleBinning {
   }
 
   const std::uint32_t* order() const { return order_.data(); }
-  // Sorted positions of material m's particles in block b: [bucket_begin(m, b), bucket_end(m, b)).
+  // Sorted positions of the m-th non-empty material's particles in block b:
+  // [bucket_begin(m, b), bucket_end(m, b)).
   std::uint32_t bucket_begin(std::size_t m, std::uint32_t b) const { return bucket_begin_[m * block_count_ + b]; }
   std::uint32_t bucket_end(std::size_t m, std::uint32_t b) const { return bucket_begin_[m * block_count_ + b + 1]; }
-  std::size_t material_count() const { return material_count_; }
+  std::size_t material_count() const { return material_count_; }  // the non-empty ones
   // Blocks holding particles, in increasing id, and the same grouped by parity colour.
   const std::vector<std::uint32_t>& particle_blocks() const { return particle_blocks_; }
   backend::BlockColouring colouring() const {

@@ -98,6 +98,7 @@ class Simulation {
     }
     g.dx = T(config.dx);
     g.inv_dx = T(1 / config.dx);
+    if (config.transfer == Transfer::apic) storage_.enable(Attribute::C);  // only APIC's P2G reads C
     const int channels = config.transfer == Transfer::flip ? GridChannels<Transfer::flip>::kCount
                                                            : GridChannels<Transfer::apic>::kCount;
     grid_.configure(g, channels);
@@ -310,6 +311,7 @@ class Simulation {
     out.max_speed = s.max_speed;
     out.min_J = pv.n ? s.min_J : 1.0;
     for (const auto& m : materials_) {
+      if (m.range.end == m.range.begin) continue;
       const std::size_t begin = m.range.begin;
       std::visit(
           [&](const auto& model) {
@@ -436,6 +438,7 @@ class Simulation {
     //    largest current P-wave modulus sets the next time step.
     std::size_t bad_stress = ParticleBinning::kNone;
     for (auto& m : materials_) {
+      if (m.range.end == m.range.begin) continue;  // no launch for a material without particles
       const std::size_t begin = m.range.begin;
       std::visit(
           [&](const auto& model) {
@@ -470,7 +473,7 @@ class Simulation {
                   a.max_modulus = std::max(a.max_modulus, b.max_modulus);
                 });
             bad_stress = std::min(bad_stress, r.first_bad);
-            if (m.range.end > begin) m.wave_speed = std::sqrt(r.max_modulus / m.info.density);
+            m.wave_speed = std::sqrt(r.max_modulus / m.info.density);
           },
           m.model);
     }

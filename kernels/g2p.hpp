@@ -86,10 +86,9 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
     pv.x[r][p] += dt * vp[r];
     pv.v[r][p] = vn[r];
   }
-  for (int q = 0; q < 9; ++q) {
-    pv.C[q][p] = C.m[q];
-    pv.F[q][p] = Fn.m[q];
-  }
+  for (int q = 0; q < 9; ++q) pv.F[q][p] = Fn.m[q];
+  if constexpr (kTransfer == Transfer::apic)  // PIC and FLIP need C for F only: not stored
+    for (int q = 0; q < 9; ++q) pv.C[q][p] = C.m[q];
   return ParticleCheck<T>{std::sqrt(vn[0] * vn[0] + vn[1] * vn[1] + vn[2] * vn[2]), determinant(Fn),
                           dt * std::sqrt(vp[0] * vp[0] + vp[1] * vp[1] + vp[2] * vp[2])};
 }

@@ -12,7 +12,7 @@ namespace firn {
 #define FIRN_PARTICLE_ATTRIBUTES(X)                                                                    \
   X(x, 3, Real, always, "position (m)")                                                                \
   X(v, 3, Real, always, "velocity (m/s)")                                                              \
-  X(C, 9, Real, always, "affine velocity field, the MLS velocity gradient (1/s), row-major")           \
+  X(C, 9, Real, on_demand, "affine velocity field, the MLS velocity gradient (1/s), row-major; APIC") \
   X(F, 9, Real, always, "deformation gradient, row-major")                                             \
   X(tau, 6, Real, always, "Kirchhoff stress tau = J sigma (Pa), symmetric: xx yy zz xy yz zx")         \
   X(mass, 1, Real, always, "mass (kg)")                                                                \

@@ -22,6 +22,7 @@ GridGeometry<double> unit_grid() {
 }
 
 void one_particle(ParticleStorage<double>& s) {
+  s.enable(Attribute::C);
   s.resize(1);
   ParticleView<double> pv = s.view();
   const double x[3] = {1.234, 1.617, 0.981}, v[3] = {0.3, -1.2, 0.7};
