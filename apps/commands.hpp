@@ -12,6 +12,8 @@ void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_help_command(CLI::App& app);
+void add_study_command(CLI::App& app);          // `firn study`, with its reports:
+void add_study_stability_command(CLI::App& study);  // `firn study stability`
 
 // Exit status of the command that ran (0: success, 1: a check or the run failed, 2: bad input,
 // 130: interrupted).
