@@ -3,7 +3,8 @@
 //   1. the largest CFL number that runs to the end, per thesis material (a ball thrown into a wall)
 //      and per thesis scene at --preview (bisection, stability_cfl.hpp);
 //   2. the highest impact speed the layered snowball survives against the wall (stability_impact.hpp);
-//   3. nearly incompressible rubber at nu = 0.45, 0.49, 0.499, Mooney-Rivlin and neo-Hookean: a
+//   3. nearly incompressible rubber at nu = 0.45, 0.49, 0.499 (and 0.3 for reference),
+//      Mooney-Rivlin and neo-Hookean: a
 //      squeezed block's outcome, min J and pressure checkerboard
 //      (stability_checkerboard.hpp);
 //   4. a resting block of hard snow for 1e5 steps: energy drift and creep (stability_long_run.hpp);
@@ -187,7 +188,7 @@ class StabilityStudy {
     const double end = quick_ ? 0.002 : 0.004;
     std::string data = "# nu mooney_rivlin_checkerboard neo_hookean_checkerboard\n";
     std::vector<std::vector<double>> table;
-    for (const double nu : {0.45, 0.49, 0.499}) {
+    for (const double nu : {0.3, 0.45, 0.49, 0.499}) {  // 0.3: a compressible reference
       std::vector<double> line = {nu};
       for (const char* model : {"mooney_rivlin", "neo_hookean"}) {
         const StudyMaterial m = rubber(model, nu);

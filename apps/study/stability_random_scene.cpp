@@ -124,7 +124,7 @@ RandomScene random_scene(std::uint64_t seed, int index) {
   const int cells = r.integer(20, 32);
   const double size = cells * dx;
   const int ppc = r.chance(0.5) ? 1 : 8;
-  const double cfl = r.uniform(0.2, 0.7);
+  const double cfl = r.uniform(0.2, 1.0);
   static const char* transfers[] = {"apic", "pic", "flip"};
   const std::string transfer = transfers[r.integer(0, 2)];
   const std::string shape = r.chance(0.5) ? "quadratic" : "cubic";
@@ -176,7 +176,7 @@ RandomScene random_scene(std::uint64_t seed, int index) {
     max_wave = std::max(max_wave, m.wave_speed());
     const std::string name = "m" + std::to_string(i);
     materials += "[materials." + name + "]\n" + m.table + "\n";
-    const double speed = r.uniform(0, 10), spin = r.chance(0.5) ? r.uniform(0, 50) : 0.0;
+    const double speed = r.uniform(0, 20), spin = r.chance(0.5) ? r.uniform(0, 50) : 0.0;
     const auto dir = r.direction(), axis = r.direction();
     max_speed = std::max(max_speed, speed + spin * bodies[i].radius);
     body_tables += "[[bodies]]\nname = \"body" + std::to_string(i) + "\"\nmaterial = \"" + name + "\"\nshape = \"" +

@@ -1,10 +1,10 @@
 // Randomised scenes for the stability study's bulk run: each a small, valid scene file (a few
 // thousand particles, 50-300 steps) drawn from a seed, so that any scene can be made again from
 // (seed, index) alone. Ranges (all physical):
-//   grid        dx 2.5-5 mm, 20-32 cells per axis, 1 or 8 particles per cell, cfl 0.2-0.7,
+//   grid        dx 2.5-5 mm, 20-32 cells per axis, 1 or 8 particles per cell, cfl 0.2-1,
 //               transfer apic/pic/flip, quadratic or cubic B-splines, float (double one time in 8)
 //   bodies      1-3 spheres, boxes or cylinders (any axis), 3-12 cells across, kept apart, at most
-//               6,000 particles in all; speed 0-10 m/s in any direction, spin 0-50 rad/s
+//               6,000 particles in all; speed 0-20 m/s in any direction, spin 0-50 rad/s
 //   materials   one per body: neo_hookean, fixed_corotated, mooney_rivlin (G2 0-0.5 G),
 //               hyperelastic_plastic (sigma_y0 50 Pa-10 kPa, K_h 0-20, n 0.02-1) or snow_stomakhin
 //               (theta_c 0.01-0.05, theta_s 0.0025-0.01, xi 5-15); density 200-2000 kg/m^3,
