@@ -34,6 +34,7 @@
 #include "apps/study/stability_report.hpp"
 #include "apps/study/stability_scenes.hpp"
 #include "apps/study/study_options.hpp"
+#include "apps/sweep/child_process.hpp"
 #include "apps/sweep/csv.hpp"
 #include "apps/sweep/gnuplot.hpp"
 #include "engine/output/atomic_file.hpp"
@@ -51,12 +52,6 @@ struct Options {
   int random = 0;  // 0: 200, or 20 with --quick
   std::string scenes = "scenes";
 };
-
-std::string self_executable() {
-  std::error_code ec;
-  const auto path = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? "/proc/self/exe" : path.string();
-}
 
 std::string fixed(double v, int digits) {
   char buf[48];
@@ -250,7 +245,7 @@ class StabilityStudy {
 
   int random_scenes() {
     RandomRunSettings s;
-    s.firn = self_executable();
+    s.firn = sweep::self_executable();
     s.dir = dir_ + "/random";
     s.seed = o_.seed;
     s.count = o_.random > 0 ? o_.random : quick_ ? 20 : 200;
