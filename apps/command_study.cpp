@@ -8,6 +8,7 @@ void add_study_command(CLI::App& app) {
   CLI::App* study = app.add_subcommand("study", "the accuracy and stability reports (CSV, summary, PNG plots)");
   study->require_subcommand(1);
   add_study_accuracy_command(*study);
+  add_study_stability_command(*study);
 }
 
 }  // namespace firn::app

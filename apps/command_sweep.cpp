@@ -84,12 +84,6 @@ int cores() {
   return std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
 }
 
-std::string self_executable() {
-  std::error_code ec;
-  const auto path = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? "/proc/self/exe" : path.string();
-}
-
 // "42.0 s", "3.5 min" or "1.25 h".
 std::string duration_text(double seconds) {
   char buf[32];

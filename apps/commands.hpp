@@ -16,6 +16,7 @@ void add_help_command(CLI::App& app);
 
 // Sub-commands of `firn study`.
 void add_study_accuracy_command(CLI::App& study);
+void add_study_stability_command(CLI::App& study);
 
 // Exit status of the command that ran (0: success, 1: a check or the run failed, 2: bad input,
 // 130: interrupted).

@@ -27,4 +27,7 @@ int wait_child(pid_t pid);
 // The status waitpid reported, as an exit status (128 + signal for a child ended by a signal).
 int exit_status_of(int wait_status);
 
+// The path of the running executable (/proc/self/exe resolved), so that firn can start itself.
+std::string self_executable();
+
 }  // namespace firn::sweep
