@@ -57,13 +57,7 @@ std::vector<EnergySeries> energy_histories(const VerificationOptions& options, s
 }
 
 bool draw(const std::string& dir, const std::string& name, const sweep::PlotFiles& files) {
-  const sweep::PlotStatus status = sweep::draw_plot(dir, name, files.data, files.script);
-  if (status == sweep::PlotStatus::no_gnuplot)
-    std::fprintf(stderr, "firn study: gnuplot not found (Debian package gnuplot-nox): no plots\n");
-  if (status == sweep::PlotStatus::failed)
-    std::fprintf(stderr, "firn study: gnuplot failed on %s/%s.gp (see %s.log)\n", dir.c_str(), name.c_str(),
-                 name.c_str());
-  return status == sweep::PlotStatus::drawn;
+  return sweep::draw_plot_or_warn("firn study accuracy", dir, name, files) == sweep::PlotStatus::drawn;
 }
 
 void run_accuracy_study(const AccuracyOptions& o) {

@@ -53,11 +53,6 @@ struct Options {
   std::string scenes = "scenes";
 };
 
-std::string fixed(double v, int digits) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
 
 class StabilityStudy {
  public:
@@ -84,7 +79,7 @@ class StabilityStudy {
  private:
   void progress(const std::string& what) const {
     std::fprintf(stderr, "firn study stability: [%s s] %s\n",
-                 fixed(std::chrono::duration<double>(Clock::now() - start_).count(), 1).c_str(), what.c_str());
+                 sweep::formatted("%.1f", seconds_since(start_)).c_str(), what.c_str());
   }
 
   // The bisection bracket for CFL numbers: from 0.1 to 3 (beyond the scene files' limit of 1, which
@@ -131,7 +126,7 @@ class StabilityStudy {
       const BisectionResult r = largest_stable_cfl(scene.spec, cfl_bracket(), probe_, [&](double cfl, const ProbeResult& p) {
         trial_row("cfl", m.name, "cfl", cfl, "", p, failure);
       });
-      bisection_row("cfl", m.name + " (ball into a wall, " + fixed(end * 1e3, 0) + " ms)", "largest stable cfl", "",
+      bisection_row("cfl", m.name + " (ball into a wall, " + sweep::formatted("%.0f", end * 1e3) + " ms)", "largest stable cfl", "",
                     cfl_bracket(), r, failure, seconds_since(t0));
       progress("cfl " + m.name + ": " + (r.largest_ok ? csv_number(*r.largest_ok) : std::string("none")));
     }
@@ -155,7 +150,7 @@ class StabilityStudy {
       const BisectionResult r = largest_stable_cfl(scene.spec, cfl_bracket(), probe_, [&](double cfl, const ProbeResult& p) {
         trial_row("cfl", t.file, "cfl", cfl, "", p, failure);
       });
-      bisection_row("cfl", std::string(t.file) + " (--preview, " + fixed(end * 1e3, 0) + " ms)", "largest stable cfl", "",
+      bisection_row("cfl", std::string(t.file) + " (--preview, " + sweep::formatted("%.0f", end * 1e3) + " ms)", "largest stable cfl", "",
                     cfl_bracket(), r, failure, seconds_since(t0));
       progress(std::string("cfl ") + t.file + ": " + (r.largest_ok ? csv_number(*r.largest_ok) : std::string("none")));
     }
@@ -290,12 +285,8 @@ class StabilityStudy {
   }
 
   void plot(const std::string& name, const std::string& data, const std::string& script) {
-    const std::string full = sweep::gnuplot_png_output(name + ".png", 900, 560) + script;
-    const sweep::PlotStatus s = sweep::draw_plot(dir_, name, data, full);
-    if (s == sweep::PlotStatus::no_gnuplot)
-      std::fprintf(stderr, "firn study stability: gnuplot not found (Debian package gnuplot-nox): no %s.png\n", name.c_str());
-    if (s == sweep::PlotStatus::failed)
-      std::fprintf(stderr, "firn study stability: gnuplot failed on %s/%s.gp\n", dir_.c_str(), name.c_str());
+    sweep::draw_plot_or_warn("firn study stability", dir_, name,
+                             {data, sweep::gnuplot_png_output(name + ".png", 900, 560) + script});
   }
 
   std::string notes() const {

@@ -230,14 +230,7 @@ class Sweep {
     for (const std::string& metric : plotted_metrics) {
       const auto plot = metric_plot(metric, plan_.keys, runs);
       if (!plot) continue;
-      const PlotStatus status = draw_plot(dir, metric, plot->data, plot->script);
-      if (status == PlotStatus::no_gnuplot) {
-        std::fprintf(stderr, "firn sweep: gnuplot not found (Debian package gnuplot-nox): no plots\n");
-        return;
-      }
-      if (status == PlotStatus::failed)
-        std::fprintf(stderr, "firn sweep: gnuplot failed on %s/%s.gp (see %s.log)\n", dir.c_str(), metric.c_str(),
-                     metric.c_str());
+      if (draw_plot_or_warn("firn sweep", dir, metric, *plot) == PlotStatus::no_gnuplot) return;
     }
   }
 

@@ -2,23 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "apps/sweep/csv.hpp"
 
 namespace firn::study {
-namespace {
 
 using sweep::csv_field;
 using sweep::csv_number;
-
-std::string fixed(double value, const char* format) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
-
-}  // namespace
+using sweep::formatted;
 
 std::string accuracy_csv(const std::vector<AccuracyRow>& rows) {
   std::string s =
@@ -56,9 +47,9 @@ std::string accuracy_summary(const std::vector<AccuracyProblem>& problems, const
         if (same_method(r.method, m) && (!finest || r.level > finest->level)) finest = &r;
       if (!finest) continue;
       const double order = observed_order(mine, m);
-      s += "| " + method_name(m) + " | " + (std::isnan(order) ? std::string("-") : fixed(order, "%.2f")) + " | " +
-           (finest->status == "ok" ? fixed(finest->result.error, "%.3g") : "stopped") + " | " +
-           fixed(finest->result.seconds, "%.2f") + " |\n";
+      s += "| " + method_name(m) + " | " + (std::isnan(order) ? std::string("-") : formatted("%.2f", order)) + " | " +
+           (finest->status == "ok" ? formatted("%.3g", finest->result.error) : "stopped") + " | " +
+           formatted("%.2f", finest->result.seconds) + " |\n";
     }
     std::vector<const AccuracyRow*> front;
     for (const AccuracyRow& r : mine)
@@ -68,7 +59,7 @@ std::string accuracy_summary(const std::vector<AccuracyProblem>& problems, const
     s += "\nPareto front, cheapest first (the cheapest setting meeting an error target is the first row below it):\n\n"
          "| run time (s) | error | level | dx | method |\n|---|---|---|---|---|\n";
     for (const AccuracyRow* r : front)
-      s += "| " + fixed(r->result.seconds, "%.3f") + " | " + fixed(r->result.error, "%.3g") + " | " +
+      s += "| " + formatted("%.3f", r->result.seconds) + " | " + formatted("%.3g", r->result.error) + " | " +
            std::to_string(r->level) + " | " + csv_number(r->result.dx) + " | " + method_name(r->method) + " |\n";
     std::size_t stopped = 0;
     for (const AccuracyRow& r : mine) stopped += r.status != "ok";

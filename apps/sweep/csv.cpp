@@ -37,10 +37,12 @@ std::vector<std::string> split_csv_line(const std::string& line) {
   return fields;
 }
 
-std::string csv_number(double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", value);
+std::string formatted(const char* printf_format, double value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, printf_format, value);
   return buf;
 }
+
+std::string csv_number(double value) { return formatted("%.6g", value); }
 
 }  // namespace firn::sweep

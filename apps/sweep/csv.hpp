@@ -10,5 +10,6 @@ namespace firn::sweep {
 std::string csv_field(const std::string& text);
 std::vector<std::string> split_csv_line(const std::string& line);  // the inverse of csv_field per field
 std::string csv_number(double value);                              // %.6g
+std::string formatted(const char* printf_format, double value);     // one number, e.g. "%.2f"
 
 }  // namespace firn::sweep

@@ -1,5 +1,6 @@
 #include "apps/sweep/gnuplot.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <system_error>
 
@@ -31,6 +32,18 @@ PlotStatus draw_plot(const std::string& dir, const std::string& name, const std:
   std::error_code ec;
   if (status == 0 && std::filesystem::file_size(log, ec) == 0) std::filesystem::remove(log, ec);
   return status == 0 ? PlotStatus::drawn : PlotStatus::failed;
+}
+
+PlotStatus draw_plot_or_warn(const std::string& program, const std::string& dir, const std::string& name,
+                             const PlotFiles& files) {
+  const PlotStatus status = draw_plot(dir, name, files.data, files.script);
+  if (status == PlotStatus::no_gnuplot)
+    std::fprintf(stderr, "%s: gnuplot not found (Debian package gnuplot-nox): no %s.png\n", program.c_str(),
+                 name.c_str());
+  if (status == PlotStatus::failed)
+    std::fprintf(stderr, "%s: gnuplot failed on %s/%s.gp (see %s.log)\n", program.c_str(), dir.c_str(), name.c_str(),
+                 name.c_str());
+  return status;
 }
 
 }  // namespace firn::sweep

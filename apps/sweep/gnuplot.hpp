@@ -26,4 +26,9 @@ enum class PlotStatus { drawn, no_gnuplot, failed };
 PlotStatus draw_plot(const std::string& dir, const std::string& name, const std::string& data,
                      const std::string& script);
 
+// draw_plot(dir, name, files), saying on standard error, as `program` ("firn sweep"), when gnuplot
+// is missing or fails.
+PlotStatus draw_plot_or_warn(const std::string& program, const std::string& dir, const std::string& name,
+                             const PlotFiles& files);
+
 }  // namespace firn::sweep

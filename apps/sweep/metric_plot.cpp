@@ -17,7 +17,7 @@ struct Curve {
 
 }  // namespace
 
-std::optional<MetricPlot> metric_plot(const std::string& metric, const std::vector<VariedKey>& keys,
+std::optional<PlotFiles> metric_plot(const std::string& metric, const std::vector<VariedKey>& keys,
                                       const std::vector<RunRecord>& runs) {
   if (keys.empty()) return std::nullopt;
   // The curves of each panel, panels in the order of the first key's values.
@@ -44,7 +44,7 @@ std::optional<MetricPlot> metric_plot(const std::string& metric, const std::vect
   if (used == 0) return std::nullopt;
 
   const std::size_t cols = std::min<std::size_t>(used, 3), rows = (used + cols - 1) / cols;
-  MetricPlot plot;
+  PlotFiles plot;
   plot.data = "# " + metric + " against time (s) for every run of the sweep; one block per curve of " + metric +
               ".gp, in the order plotted\n";
   std::string& s = plot.script;

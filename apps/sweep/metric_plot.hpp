@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/sweep/gnuplot.hpp"
 #include "apps/sweep/run_record.hpp"
 #include "apps/sweep/value_list.hpp"
 
@@ -15,14 +16,11 @@ namespace firn::sweep {
 // The scene-metric columns a sweep plots, when the runs have them.
 inline const std::vector<std::string> plotted_metrics = {"displaced", "accumulated", "traction"};
 
-struct MetricPlot {
-  std::string data;    // METRIC.dat: "time value" lines, one block per curve in the order plotted
-  std::string script;  // METRIC.gp: reads METRIC.dat and writes METRIC.png in the folder it runs in
-};
-
-// None when no run has a value of the metric. The script picks gnuplot's pngcairo terminal, or
+// data: METRIC.dat, "time value" lines, one block per curve in the order plotted; script: METRIC.gp,
+// which reads METRIC.dat and writes METRIC.png in the folder it runs in. None when no run has a
+// value of the metric. The script picks gnuplot's pngcairo terminal, or
 // png where pngcairo is absent.
-std::optional<MetricPlot> metric_plot(const std::string& metric, const std::vector<VariedKey>& keys,
+std::optional<PlotFiles> metric_plot(const std::string& metric, const std::vector<VariedKey>& keys,
                                       const std::vector<RunRecord>& runs);
 
 }  // namespace firn::sweep

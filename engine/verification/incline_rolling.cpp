@@ -42,6 +42,7 @@ namespace firn {
 namespace {
 
 constexpr double kTheta = M_PI / 4, kRadius = 0.1, kFitStart = 0.07;
+constexpr int kPerCell = 2;  // particles per cell per axis
 // mu = factor tan(theta) / 3: the smallest mu that lets it roll, times 1.25 (rolls) or 0.75 (slides)
 constexpr double kRollingFactor = 1.25, kSlidingFactor = 0.75;
 
@@ -51,7 +52,7 @@ InclineRun cylinder(int level, double factor, const VerificationMethod& method) 
   run.angle = kTheta;
   run.mu = factor * std::tan(kTheta) / 3;
   run.dx = kRadius / (10 << level);
-  run.per_cell = 2;
+  run.per_cell = kPerCell;
   run.material = {"cylinder", "neo_hookean", 1000, ElasticModuli::from_E_nu(1e7, 0.3)};
   run.body_max = {2 * kRadius, 2 * kRadius, 0};
   run.inside = [](const Point& p) {
@@ -97,11 +98,11 @@ std::vector<VerificationRow> run_rolling_levels(const std::vector<int>& levels,
     const long steps = rolls.history.steps + slides.history.steps;
     const double seconds = rolls.history.seconds + slides.history.seconds;
     const std::size_t particles = rolls.history.particles;
-    rows.push_back({"incline_rolling.acceleration", l, dx, 2, steps, std::abs(rolls.acceleration / rolls.exact - 1),
+    rows.push_back({"incline_rolling.acceleration", l, dx, kPerCell, steps, std::abs(rolls.acceleration / rolls.exact - 1),
                     acceleration_bounds[i], seconds, particles});
-    rows.push_back({"incline_rolling.roll_slip", l, dx, 2, steps, std::abs(rolls.slip), slip_split, 0, particles});
-    rows.push_back({"incline_rolling.slide_slip", l, dx, 2, steps, 1.0 / 3 - slides.slip, slip_split, 0, particles});
-    rows.push_back({"incline_rolling.slide_acceleration", l, dx, 2, steps,
+    rows.push_back({"incline_rolling.roll_slip", l, dx, kPerCell, steps, std::abs(rolls.slip), slip_split, 0, particles});
+    rows.push_back({"incline_rolling.slide_slip", l, dx, kPerCell, steps, 1.0 / 3 - slides.slip, slip_split, 0, particles});
+    rows.push_back({"incline_rolling.slide_acceleration", l, dx, kPerCell, steps,
                     std::abs(slides.acceleration / slides.exact - 1), slide_bound, 0, particles});
   }
   return rows;
@@ -111,7 +112,7 @@ std::vector<VerificationRow> run_rolling_levels(const std::vector<int>& levels,
 
 VerificationCase incline_rolling_case(int level, const VerificationMethod& method, const VerificationOptions& options) {
   const RollingResult r = roll(level, kRollingFactor, method, options);
-  return {kRadius / (10 << level), 2, r.history.particles, r.history.steps, std::abs(r.acceleration / r.exact - 1),
+  return {kRadius / (10 << level), kPerCell, r.history.particles, r.history.steps, std::abs(r.acceleration / r.exact - 1),
           r.history.seconds};
 }
 
