@@ -65,11 +65,12 @@ FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, co
     const int node[3] = {block[0] * kBlockSize + l / (kBlockSize * kBlockSize),
                          block[1] * kBlockSize + (l / kBlockSize) % kBlockSize, block[2] * kBlockSize + l % kBlockSize};
     if (p.collider_count > 0) {
+      const T skin = T(kColliderSkin) * p.dx;
       const T x[3] = {p.origin[0] + T(node[0]) * p.dx, p.origin[1] + T(node[1]) * p.dx, p.origin[2] + T(node[2]) * p.dx};
       for (int c = 0; c < p.collider_count; ++c) {
         const Collider<T>& k = p.colliders[c];
         const T before[3] = {v[0], v[1], v[2]};
-        if (!k.apply(v, x)) continue;
+        if (!k.apply(v, x, skin)) continue;
         T f[3];  // on the collider: -m (v_after - v_before) / dt
         for (int d = 0; d < 3; ++d) f[d] = *mass * (before[d] - v[d]) / p.dt;
         const T r[3] = {x[0] - k.center[0], x[1] - k.center[1], x[2] - k.center[2]};

@@ -47,12 +47,38 @@ TEST(Colliders, AStickyMovingPlaneImposesItsVelocity) {
   plane.velocity[1] = 1;
   double v[3] = {3, -2, 1};
   const double x_in[3] = {0, 0.4, 0}, x_out[3] = {0, 0.6, 0};
-  EXPECT_FALSE(plane.apply(v, x_out));
+  EXPECT_FALSE(plane.apply(v, x_out, 0.0));
   EXPECT_EQ(v[0], 3);
-  EXPECT_TRUE(plane.apply(v, x_in));
+  EXPECT_TRUE(plane.apply(v, x_in, 0.0));
   EXPECT_EQ(v[0], 0);
   EXPECT_EQ(v[1], 1);
   EXPECT_EQ(v[2], 0);
+}
+
+// A node on the plane is outside whatever the rounding of its coordinate: the ground plane through
+// a node row of the incline problems, computed as origin + i dx in float and in double, with and
+// without a fused multiply-add, lands within rounding of zero on either side.
+template <class T>
+void expect_surface_nodes_outside() {
+  const T dx = T(0.01), skin = T(kColliderSkin) * dx;
+  Collider<T> ground;  // the solid y <= 0
+  const T origin = T(-3 * 0.01);
+  const T row[3] = {origin + T(3) * dx, std::fma(T(3), dx, origin), T(-1e-7) * dx};
+  for (T y : row) {
+    T v[3] = {T(1), T(-1), T(0)};
+    const T x[3] = {T(0.05), y, T(0)};
+    EXPECT_FALSE(ground.apply(v, x, skin)) << "y = " << y;
+    EXPECT_EQ(v[1], T(-1));
+  }
+  T v[3] = {T(1), T(-1), T(0)};
+  const T below[3] = {T(0.05), T(-0.01) * dx, T(0)};  // ten skins deep
+  EXPECT_TRUE(ground.apply(v, below, skin));
+  EXPECT_EQ(v[1], T(0));
+}
+
+TEST(Colliders, NodesOnTheSurfaceAreOutsideInFloatAndDouble) {
+  expect_surface_nodes_outside<float>();
+  expect_surface_nodes_outside<double>();
 }
 
 // A spinning sticky cylinder gives a node inside it the rigid velocity omega x r.
@@ -66,7 +92,7 @@ TEST(Colliders, ASpinningCylinderImposesOmegaCrossR) {
   const double bottom[3] = {2, -0.9, 0.1};
   EXPECT_NEAR(wheel.distance(bottom, n), -0.1, 1e-12);
   EXPECT_NEAR(n[1], -1, 1e-12);
-  EXPECT_TRUE(wheel.apply(v, bottom));
+  EXPECT_TRUE(wheel.apply(v, bottom, 0.0));
   EXPECT_NEAR(v[0], -2.7, 1e-12);  // (0, 0, -3) x (0, -0.9, 0.1) = (-2.7, 0, 0)
   EXPECT_NEAR(v[1], 0, 1e-12);
 }
