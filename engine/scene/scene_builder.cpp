@@ -86,11 +86,11 @@ ColliderBody tire_body(const TireSpec& t) {
   return body;
 }
 
-ColliderBody ground_body(const ConveyorSpec& c) {
-  Collider<double> k;  // a plane with body axes = world axes: the solid y <= ground
+ColliderBody ground_body(const ConveyorSpec& c, double dx) {
+  Collider<double> k;  // a plane with body axes = world axes: the solid y <= ground + dx / 2
   k.boundary = c.boundary;
   k.friction = Friction<double>{FrictionLaw::coulomb, c.friction};
-  k.center[1] = c.ground;
+  k.center[1] = c.ground + dx / 2;
   k.velocity[0] = -c.speed;
   return ColliderBody(k);
 }
@@ -99,7 +99,7 @@ std::vector<Collider<double>> scene_colliders_at(const SceneSpec& scene, double 
   std::vector<ColliderBody> bodies;
   for (const ColliderSpec& c : scene.colliders) bodies.push_back(collider_body(c));
   if (scene.tire) bodies.push_back(tire_body(*scene.tire));
-  if (scene.conveyor) bodies.push_back(ground_body(*scene.conveyor));
+  if (scene.conveyor) bodies.push_back(ground_body(*scene.conveyor, scene.config.dx));
   std::vector<Collider<double>> out;
   for (ColliderBody& b : bodies) {
     b.motion = ColliderBody::Motion::prescribed;

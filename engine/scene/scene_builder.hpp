@@ -23,7 +23,11 @@ void fill_body(const SceneSpec& scene, std::size_t index, std::vector<Point>& po
 // The engine's colliders for a scene's [[colliders]] entry, its [tire] and its [conveyor] ground.
 ColliderBody collider_body(const ColliderSpec& spec);
 ColliderBody tire_body(const TireSpec& spec);
-ColliderBody ground_body(const ConveyorSpec& spec);
+// The belt's plane lies half a cell above `ground`, so that the node row nearest the bed's lowest
+// particles is the belt's whatever the ground's height: a node on a collider's surface is outside
+// (kernels/colliders.hpp), and through the row a cell further down the belt would hold the bed by
+// a weight of 0 to 0.03 per particle, and the bed would sink and drag (tests/test_conveyor.cpp).
+ColliderBody ground_body(const ConveyorSpec& spec, double dx);
 
 // Every collider of the scene (its [[colliders]], the tire, the conveyor's ground) where it is at
 // `time`: exact for prescribed motion; a loaded axle is shown at its starting height.
@@ -55,7 +59,7 @@ BuiltScene build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
   if (scene.tire) built.tire = sim.add_collider(tire_body(*scene.tire));
   if (scene.conveyor) {
     const ConveyorSpec& c = *scene.conveyor;
-    built.ground = sim.add_collider(ground_body(c));
+    built.ground = sim.add_collider(ground_body(c, scene.config.dx));
     std::vector<Point> bed = Conveyor(scene, c).initial_bed();
     if (scene.tire) {  // the tire starts pressed into the snow: no particles inside it
       const Collider<double>& tire = sim.collider(built.tire).collider;
