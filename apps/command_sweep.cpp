@@ -1,8 +1,9 @@
 // firn sweep SCENE --vary KEY=V1,V2[,...]... [--set KEY=VALUE]... [--out DIR] [--preview] [--jobs N]
-//                  [--at T1,T2,...]
+//                  [--at T1,T2,...] [--plot C1,C2,...]
 // Runs every combination of the --vary values (their Cartesian product) as a child `firn run`, N at
 // a time, and writes DIR/sweep.csv (one row per finished run, rewritten after each) and gnuplot
-// PNG plots of the plotted scene metrics under DIR/plots/. Every combination is validated first:
+// PNG plots of scene metrics against time under DIR/plots/ (--plot, or displaced, accumulated and
+// traction). Every combination is validated first:
 // any scene fault is one line on standard error, exit status 2, and nothing is run or written.
 // Exit status: 0 every run ok, 1 some run not ok, 2 bad scene or options, 130 interrupted.
 #include <sched.h>
@@ -36,7 +37,7 @@ using namespace firn::sweep;
 using Clock = std::chrono::steady_clock;
 
 struct Options {
-  std::string scene, out, at;
+  std::string scene, out, at, plot;
   std::vector<std::string> varies, sets;
   int jobs = 1;
   bool preview = false;
@@ -46,6 +47,8 @@ struct Plan {
   std::vector<VariedKey> keys;
   std::vector<std::vector<std::string>> combinations;
   std::vector<double> at_times;
+  std::vector<std::string> plots;  // metric columns; a named one that no run writes is reported
+  bool plots_named = false;
   std::string out;
 };
 
@@ -67,6 +70,8 @@ Plan make_plan(const Options& o) {
         throw std::invalid_argument("--at " + t + ": " + e.what());
       }
     }
+  plan.plots_named = !o.plot.empty();
+  plan.plots = plan.plots_named ? split_value_list(o.plot) : default_plotted_metrics;
   plan.combinations = cartesian_product(plan.keys);
   std::string name;
   for (const auto& values : plan.combinations) {
@@ -227,9 +232,12 @@ class Sweep {
   void plot() {
     const std::string dir = plan_.out + "/plots";
     const std::vector<RunRecord> runs = finished();
-    for (const std::string& metric : plotted_metrics) {
+    for (const std::string& metric : plan_.plots) {
       const auto plot = metric_plot(metric, plan_.keys, runs);
-      if (!plot) continue;
+      if (!plot) {
+        if (plan_.plots_named) std::fprintf(stderr, "firn sweep: --plot %s: no finished run wrote it\n", metric.c_str());
+        continue;
+      }
       if (draw_plot_or_warn("firn sweep", dir, metric, *plot) == PlotStatus::no_gnuplot) return;
     }
   }
@@ -261,6 +269,9 @@ void add_sweep_command(CLI::App& app) {
       ->capture_default_str();
   sweep->add_option("--at", o->at,
                     "times for the C@T columns of sweep.csv, e.g. --at 0.1,0.2 or --at \"50 ms,100 ms\"");
+  sweep->add_option("--plot", o->plot,
+                    "metrics.csv columns to plot against time, e.g. --plot road_fx,road_fy "
+                    "(default: displaced,accumulated,traction)");
   sweep->callback([o]() {
     Plan plan;
     try {

@@ -238,20 +238,26 @@ TEST(SweepPlot, OnePanelPerFirstKeyValueOneCurvePerOtherValues) {
   EXPECT_NE(plot->data.find("0.2 4\n"), std::string::npos) << plot->data;
   EXPECT_FALSE(metric_plot("accumulated", keys, plot_runs()));  // no run has it
   EXPECT_TRUE(metric_plot("traction", keys, plot_runs()));
-  // One varied key: one curve per panel, no legend.
+  // One varied key: one panel, one curve per run, labelled with its value (the thesis' Figure 4.2).
   std::vector<RunRecord> one = plot_runs();
   for (auto& r : one) r.values.resize(1);
   const auto single = metric_plot("displaced", {{"snow", {"hard", "soft"}}}, one);
   ASSERT_TRUE(single);
-  EXPECT_NE(single->script.find("notitle"), std::string::npos);
+  EXPECT_NE(single->script.find("set multiplot layout 1,1"), std::string::npos) << single->script;
+  EXPECT_NE(single->script.find("index 2 using 1:2 with lines linewidth 2 linecolor 3 dashtype 1 title 'snow = soft'"),
+            std::string::npos)
+      << single->script;
+  EXPECT_EQ(single->script.find("notitle"), std::string::npos) << single->script;
   const auto quoted =
       metric_plot("displaced", {{"snow", {"it's"}}}, {record({"it's"}, "ok", metrics_csv("displaced", {{0, "1"}}))});
   ASSERT_TRUE(quoted);
-  EXPECT_NE(quoted->script.find("set title 'snow = it''s'"), std::string::npos) << quoted->script;
+  EXPECT_NE(quoted->script.find("title 'snow = it''s'"), std::string::npos) << quoted->script;
 }
 
-// The plotted metrics are exactly the thesis' Figures 5.5/5.6 quantities and traction.
-TEST(SweepPlot, PlottedMetrics) { EXPECT_EQ(plotted_metrics, (Strings{"displaced", "accumulated", "traction"})); }
+// Without --plot, a sweep plots the thesis' Figures 5.5/5.6 quantities and traction.
+TEST(SweepPlot, DefaultPlottedMetrics) {
+  EXPECT_EQ(default_plotted_metrics, (Strings{"displaced", "accumulated", "traction"}));
+}
 
 bool on_path(const std::string& program) {
   const char* path = std::getenv("PATH");

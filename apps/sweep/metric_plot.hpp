@@ -1,6 +1,7 @@
 // gnuplot files drawing one scene metric against time for every run of a sweep, grouped like the
 // thesis' Figures 5.5 and 5.6: one panel per value of the first varied key, one curve per
-// combination of the other keys, labelled with their values.
+// combination of the other keys, labelled with their values; with one varied key, like its
+// Figure 4.2: one panel, one curve per value.
 #pragma once
 
 #include <optional>
@@ -13,8 +14,8 @@
 
 namespace firn::sweep {
 
-// The scene-metric columns a sweep plots, when the runs have them.
-inline const std::vector<std::string> plotted_metrics = {"displaced", "accumulated", "traction"};
+// The scene-metric columns a sweep plots without --plot, when the runs have them.
+inline const std::vector<std::string> default_plotted_metrics = {"displaced", "accumulated", "traction"};
 
 // data: METRIC.dat, "time value" lines, one block per curve in the order plotted; script: METRIC.gp,
 // which reads METRIC.dat and writes METRIC.png in the folder it runs in. None when no run has a
