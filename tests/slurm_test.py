@@ -10,6 +10,7 @@ values. Exits with status 77 (skipped, with the reason) when Slurm cannot be ins
 """
 import csv
 import os
+import re
 import shutil
 import socket
 import subprocess
@@ -36,6 +37,7 @@ def install():
     if os.geteuid() != 0 or not shutil.which("apt-get"):
         skip("Slurm is not installed and this is not root with apt-get (make slurm-deps installs it)")
     env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
+    run("apt-get", "update", "-q", timeout=600)
     r = run("apt-get", "install", "-y", "-q", "--no-install-recommends", "slurmctld", "slurmd", "slurm-client",
             "munge", env=env, timeout=900)
     if r.returncode != 0:
@@ -154,10 +156,12 @@ try:
     check(len(rows) == 4 and all(row["status"] == "ok" for row in rows), "sweep.csv: %r" % rows)
     check([(row["simulation.cfl"], row["bodies.0.velocity"]) for row in rows] ==
           [(c, v) for c in ["0.3", "0.4"] for v in ["[0.1, 0, 0]", "[0.2, 0, 0]"]], "rows out of order: %r" % rows)
-    for run_dir in sorted(os.listdir(os.path.join(out, "runs"))):
-        cfl = "0.3" if run_dir.startswith(("001", "002")) else "0.4"
+    for task, run_dir in enumerate(sorted(os.listdir(os.path.join(out, "runs"))), 1):
+        cfl = 0.3 if task <= 2 else 0.4
         resolved = open(os.path.join(out, "runs", run_dir, "scene.resolved.toml")).read()
-        check("cfl = " + cfl in resolved, run_dir + " did not run with cfl " + cfl)
+        got = re.search(r"^cfl = (\S+)$", resolved, re.M)
+        check(got and abs(float(got.group(1)) - cfl) < 1e-12, run_dir + " did not run with cfl %g" % cfl)
+        check(os.path.exists(os.path.join(out, "slurm", "task_%d.txt" % task)), "Slurm ran no task %d" % task)
     print("ok: job array %s, 4 runs collected" % job)
 finally:
     stop(daemons)
