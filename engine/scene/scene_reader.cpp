@@ -141,6 +141,7 @@ class TableReader {
     toml::array o;
     for (int d = 0; d < 3; ++d) {
       p[d] = to_number(*a->get(std::size_t(d)), k, key);
+      if (!std::isfinite(p[d])) fail(key, std::string("must be finite (") + "xyz"[d] + " is " + number_text(p[d]) + ")");
       o.push_back(p[d]);
     }
     out_.insert_or_assign(key, o);
