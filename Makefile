@@ -50,10 +50,11 @@ test: build
 	$(MAKE) fuzz
 
 fuzz:
-	@if command -v clang++ >/dev/null && ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-*.a >/dev/null 2>&1; then \
+	@if command -v clang++ >/dev/null && ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-*.a >/dev/null 2>&1 && \
+	    ls /usr/lib/llvm-*/lib/libomp.so >/dev/null 2>&1; then \
 	  cmake --preset fuzz && cmake --build --preset fuzz -j $(JOBS) && \
 	  nice tests/fuzz/run_fuzz.sh build/fuzz/tests/fuzz/firn_fuzz_scene $(FUZZ_SECONDS); \
-	else echo "make fuzz: skipped: no clang++ with libFuzzer (make fuzz-deps installs them)"; fi
+	else echo "make fuzz: skipped: no clang++ with libFuzzer and libomp (make fuzz-deps installs them)"; fi
 
 bench: build
 	build/release/bench/firn_bench_kernels
