@@ -2,22 +2,39 @@
 #   make deps   install the Debian packages the build needs (idempotent, skips what is present)
 #   make demo   deps + Release build + the known-answer problems, the snowball_pair scene (preview,
 #               rendered to frames/*.png and video.mp4) and the reference benchmark
-#   make test   deps + Release build + the whole test suite
+#   make test   deps + Release build + the whole test suite, then a 30 s fuzz run where clang is present
+#   make fuzz   the fuzz preset's build and FUZZ_SECONDS (default 30) of the scene fuzzer (skipped
+#               without clang and libFuzzer; make fuzz-deps installs them)
+#   make slurm-deps  install Slurm and munge, for the one-node Slurm test of firn sweep --scheduler slurm
 DEB_PACKAGES := build-essential cmake libeigen3-dev libcli11-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev \
                 python3 python3-vtk9 gnuplot-nox \
                 libegl-dev libgl-dev libosmesa6-dev libegl-mesa0 libgl1-mesa-dri libstb-dev zlib1g-dev ffmpeg
+FUZZ_PACKAGES := clang libclang-rt-14-dev libomp-14-dev
+SLURM_PACKAGES := slurmctld slurmd slurm-client munge
 JOBS ?= $(shell nproc)
+FUZZ_SECONDS ?= 30
 FIRN := build/release/firn
 
-.PHONY: deps build demo test bench clean
+.PHONY: deps fuzz-deps slurm-deps build demo test fuzz bench clean
 
-deps:
-	@missing=$$(for p in $(DEB_PACKAGES); do \
+# $(call install_missing,TARGET,PACKAGES): apt-get install those of PACKAGES not installed yet.
+define install_missing
+	@missing=$$(for p in $(2); do \
 	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed$$' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
-	  echo "make deps: installing" $$missing; \
+	  echo "make $(1): installing" $$missing; \
 	  apt-get update -q && DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $$missing; \
-	else echo "make deps: all packages present"; fi
+	else echo "make $(1): all packages present"; fi
+endef
+
+deps:
+	$(call install_missing,deps,$(DEB_PACKAGES))
+
+fuzz-deps:
+	$(call install_missing,fuzz-deps,$(FUZZ_PACKAGES))
+
+slurm-deps:
+	$(call install_missing,slurm-deps,$(SLURM_PACKAGES))
 
 build: deps
 	cmake --preset release
@@ -30,6 +47,14 @@ demo: build
 
 test: build
 	ctest --preset release
+	$(MAKE) fuzz
+
+fuzz:
+	@if command -v clang++ >/dev/null && ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-*.a >/dev/null 2>&1 && \
+	    ls /usr/lib/llvm-*/lib/libomp.so >/dev/null 2>&1; then \
+	  cmake --preset fuzz && cmake --build --preset fuzz -j $(JOBS) && \
+	  nice tests/fuzz/run_fuzz.sh build/fuzz/tests/fuzz/firn_fuzz_scene $(FUZZ_SECONDS); \
+	else echo "make fuzz: skipped: no clang++ with libFuzzer and libomp (make fuzz-deps installs them)"; fi
 
 bench: build
 	build/release/bench/firn_bench_kernels

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/sweep/child_process.hpp"
 #include "engine/scene/scene_builder.hpp"
+#include "engine/scene/scene_lookup.hpp"
 #include "engine/scene/scene_schema.hpp"
 #include "kernels/backend/serial.hpp"
 
@@ -85,12 +87,12 @@ void add_check_command(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("check", "validate a scene and estimate particles, grid, time step and memory");
-  cmd->add_option("scene", o->scene, "scene file (TOML)")->required();
+  cmd->add_option("scene", o->scene, "scene file (TOML) or the name of a shipped scene")->required();
   cmd->add_option("--set", o->sets, "override a scene key (repeatable)");
   cmd->add_flag("--preview", o->preview, "as firn run --preview");
   cmd->callback([o]() {
     try {
-      const LoadedScene scene = load_scene(o->scene, SceneOptions{o->sets, o->preview});
+      const LoadedScene scene = load_scene(scene_path(o->scene), SceneOptions{o->sets, o->preview});
       if (scene.spec.precision == "double") check<double>(scene.spec);
       else check<float>(scene.spec);
     } catch (const SceneError& e) {
@@ -100,11 +102,27 @@ void add_check_command(CLI::App& app) {
   });
 }
 
+std::string shipped_scenes() { return shipped_scene_folder(sweep::self_executable(), FIRN_SOURCE_DIR "/scenes"); }
+
+std::string scene_path(const std::string& scene) { return find_scene(scene, shipped_scenes()); }
+
 void add_help_command(CLI::App& app) {
   CLI::App* help = app.add_subcommand("help", "reference documentation");
   help->require_subcommand(1);
   help->add_subcommand("scene-keys", "print docs/scenes.md: every scene key with unit, default and meaning")
       ->callback([]() { std::fputs(scene_reference_markdown().c_str(), stdout); });
+  help->add_subcommand("scenes", "list the scenes shipped with firn (firn run NAME runs one)")->callback([]() {
+    const std::string folder = shipped_scenes();
+    const std::vector<ShippedScene> scenes = list_scenes(folder);
+    if (scenes.empty()) {
+      std::fprintf(stderr, "firn help scenes: no scenes in %s\n", folder.c_str());
+      set_exit_status(1);
+      return;
+    }
+    std::printf("Scenes shipped with firn, in %s (firn run NAME; a file of that name in the current folder "
+                "comes first):\n", folder.c_str());
+    for (const ShippedScene& s : scenes) std::printf("  %-16s %s\n", s.name.c_str(), s.summary.c_str());
+  });
 }
 
 }  // namespace firn::app

@@ -68,7 +68,7 @@ void add_run_command(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   CLI::App* run = app.add_subcommand("run", "run a scene and write its outputs");
-  run->add_option("scene", o->scene, "scene file (TOML)")->required();
+  run->add_option("scene", o->scene, "scene file (TOML) or the name of a shipped scene (firn help scenes)")->required();
   run->add_option("--out", o->out, "output folder (default: out/<scene name>)");
   run->add_option("--set", o->sets, "override a scene key, e.g. --set simulation.dx=0.002 (repeatable)");
   run->add_option("--threads", o->threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
@@ -86,7 +86,7 @@ void add_run_command(CLI::App& app) {
     }
     LoadedScene scene;
     try {
-      scene = load_scene(o->scene, SceneOptions{o->sets, o->preview});
+      scene = load_scene(scene_path(o->scene), SceneOptions{o->sets, o->preview});
     } catch (const SceneError& e) {
       std::fprintf(stderr, "%s\n", e.what());
       set_exit_status(2);

@@ -50,8 +50,13 @@ struct Options {
   StudyOptions study{false, "out/study/stability", 0};
   std::uint64_t seed = 1;
   int random = 0;  // 0: 200, or 20 with --quick
-  std::string scenes = "scenes";
+  std::string scenes;  // empty: the thesis scenes by name (scene_path)
 };
+
+// The thesis scene NAME: in --scenes DIR when given, else found by name like firn run's.
+std::string thesis_scene(const Options& o, const std::string& name) {
+  return o.scenes.empty() ? scene_path(name) : o.scenes + "/" + name + ".toml";
+}
 
 
 class StabilityStudy {
@@ -144,7 +149,7 @@ class StabilityStudy {
     for (const ThesisScene& t : scenes) {
       const auto t0 = Clock::now();
       const double end = quick_ ? t.quick_end : t.end;
-      const LoadedScene scene = load_scene(o_.scenes + "/" + t.file + ".toml",
+      const LoadedScene scene = load_scene(thesis_scene(o_, t.file),
                                            SceneOptions{{"simulation.end_time=" + csv_number(end)}, true});
       std::string failure;
       const BisectionResult r = largest_stable_cfl(scene.spec, cfl_bracket(), probe_, [&](double cfl, const ProbeResult& p) {
@@ -158,7 +163,7 @@ class StabilityStudy {
 
   void impact_speed() {
     const auto t0 = Clock::now();
-    const LoadedScene scene = load_scene(o_.scenes + "/snowball_wall.toml", SceneOptions{{}, true});
+    const LoadedScene scene = load_scene(thesis_scene(o_, "snowball_wall"), SceneOptions{{}, true});
     const BisectionSettings bracket{2, 512, quick_ ? 0.15 : 0.02, true};
     std::string failure;
     const BisectionResult r = highest_survived_speed(scene.spec, bracket, probe_, [&](double v, const ProbeResult& p) {
@@ -336,12 +341,14 @@ void add_study_stability_command(CLI::App& study) {
   cmd->add_option("--seed", o->seed, "seed of the randomised scenes")->capture_default_str();
   cmd->add_option("--random", o->random, "number of randomised scenes (default 200, 20 with --quick)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--scenes", o->scenes, "folder of the thesis' scene files")->capture_default_str();
+  cmd->add_option("--scenes", o->scenes, "folder of the thesis' scene files (default: found by name like firn run's)");
   cmd->callback([o]() {
     for (const char* f : {"snowball_wall", "snowball_pair", "snow_bar", "tire_on_snow"})
-      if (!std::filesystem::exists(o->scenes + "/" + f + ".toml")) {
-        std::fprintf(stderr, "firn study stability: %s/%s.toml not found (run from the repository root, or give --scenes)\n",
-                     o->scenes.c_str(), f);
+      try {
+        if (!std::filesystem::is_regular_file(thesis_scene(*o, f)))
+          throw SceneError(thesis_scene(*o, f) + " not found (--scenes names a folder holding " + f + ".toml)");
+      } catch (const SceneError& e) {
+        std::fprintf(stderr, "firn study stability: %s\n", e.what());
         set_exit_status(2);
         return;
       }

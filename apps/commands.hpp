@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <string>
+
 namespace firn::app {
 
 void add_bench_command(CLI::App& app);
@@ -17,6 +19,12 @@ void add_help_command(CLI::App& app);
 // Sub-commands of `firn study`.
 void add_study_accuracy_command(CLI::App& study);
 void add_study_stability_command(CLI::App& study);
+
+// The folder of the scenes shipped with firn (installed: PREFIX/share/firn/scenes; in the build
+// folder: the source tree's scenes/), and the file a SCENE argument names, a shipped scene's name
+// included (engine/scene/scene_lookup.hpp; throws SceneError).
+std::string shipped_scenes();
+std::string scene_path(const std::string& scene);
 
 // Exit status of the command that ran (0: success, 1: a check or the run failed, 2: bad input,
 // 130: interrupted).

@@ -1,6 +1,7 @@
 #include "engine/units.hpp"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -102,6 +103,7 @@ double parse_quantity(const std::string& text, Quantity q) {
   const double value = std::strtod(begin, &end);
   if (end == begin || errno == ERANGE)
     throw std::invalid_argument("'" + text + "' is not a number with a unit");
+  if (!std::isfinite(value)) throw std::invalid_argument("'" + text + "' is not a finite number");
   const std::string unit = trim(std::string(end));
   if (unit.empty()) return value;
   for (const Unit& u : kUnits) {

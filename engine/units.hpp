@@ -26,7 +26,7 @@ const char* si_unit(Quantity q);
 const char* quantity_name(Quantity q);
 
 // Converts "VALUE UNIT" (or a bare number) to SI. Throws std::invalid_argument with a message that
-// names the unit problem (unknown unit, or a unit of another quantity).
+// names the problem (not a finite number, an unknown unit, or a unit of another quantity).
 double parse_quantity(const std::string& text, Quantity q);
 
 }  // namespace firn

@@ -106,6 +106,33 @@ def test_bad_input():
         check(not os.path.exists(out), f"{name}: {out} was written")
 
 
+def test_collect():
+    # --collect rebuilds sweep.csv from DIR/sweep.args and the runs' outputs, here of a local sweep.
+    out = fresh("collect")
+    r = sweep(out, "--vary", "simulation.transfer=pic,apic", "--at", "0.05")
+    check(r.returncode == 0, f"exit status {r.returncode}: {r.stderr}")
+    before = table(out)
+    os.remove(os.path.join(out, "sweep.csv"))
+    r = subprocess.run([FIRN, "sweep", "--collect", out], capture_output=True, text=True, timeout=120)
+    check(r.returncode == 0 and "2 of 2 runs finished" in r.stderr, f"--collect: {r.returncode}: {r.stderr}")
+    check(table(out) == before, f"--collect wrote {table(out)}, the sweep {before}")
+    os.remove(os.path.join(out, "runs", "002_apic", "summary.json"))
+    r = subprocess.run([FIRN, "sweep", "--collect", out], capture_output=True, text=True, timeout=120)
+    check(r.returncode == 1 and "not yet: run 2" in r.stderr, f"--collect with a run missing: {r.returncode}: {r.stderr}")
+    check(table(out) == before[:2], f"--collect with a run missing wrote {table(out)}")
+    # Mistakes: exit status 2 and one line.
+    for args in [["--collect", out, SCENE], ["--collect", os.path.join(out, "runs")], [SCENE],
+                 [SCENE, "--vary", "simulation.transfer=pic", "--sbatch=--partition=x"]]:
+        r = subprocess.run([FIRN, "sweep"] + args, capture_output=True, text=True, timeout=120)
+        check(r.returncode == 2 and r.stderr.count("\n") == 1, f"firn sweep {args}: {r.returncode}: {r.stderr!r}")
+    # --scheduler slurm where there is no sbatch: the job script is written, the failure named.
+    out = fresh("no_sbatch")
+    r = subprocess.run([FIRN, "sweep", SCENE, "--out", out, "--scheduler", "slurm", "--vary", "simulation.transfer=pic,apic"],
+                       capture_output=True, text=True, timeout=120, env=dict(os.environ, PATH="/nonexistent"))
+    check(r.returncode == 1 and "sbatch" in r.stderr and "installed" in r.stderr, f"no sbatch: {r.returncode}: {r.stderr}")
+    check("--array=1-2" in open(os.path.join(out, "slurm", "sweep.sbatch")).read(), "no job script")
+
+
 def interrupt_when(out, jobs, end_times, ready):
     """Starts a sweep over end times, sends SIGINT once every path in `ready` exists, returns stderr.
     The spheres are at rest, so a long run can only end by reaching its end time."""

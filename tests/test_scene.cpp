@@ -39,6 +39,26 @@ TEST(Units, RejectsAUnitOfAnotherQuantityOrAnUnknownOne) {
   EXPECT_THROW(parse_quantity("mm", Quantity::length), std::invalid_argument);
 }
 
+// Fuzzer findings (tests/fuzz): strtod reads "nan" and "inf", TOML has nan and inf literals.
+TEST(Units, RejectsNonFiniteNumbers) {
+  for (const char* text : {"nan", "inf mm", "-infinity m/s", "NAN Pa"})
+    EXPECT_THROW(parse_quantity(text, Quantity::length), std::invalid_argument) << text;
+}
+
+TEST(SceneReader, RefusesNonFiniteVectorComponents) {
+  for (const char* set : {"simulation.gravity=[0, nan, 0]", "bodies.0.velocity=[0, inf, 0]",
+                          "simulation.domain_max=[1, 1, inf]", "bodies.0.center=[\"nan m\", 0.3, 0.5]"}) {
+    SceneOptions o;
+    o.overrides = {set};
+    try {
+      load_scene(kScenes + "two_spheres.toml", o);
+      ADD_FAILURE() << set << " was accepted";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("finite"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(SceneReader, ReadsSnowballPairWithPresetsAndUnits) {
   const SceneSpec s = load_scene(kScenes + "snowball_pair.toml", {}).spec;
   EXPECT_DOUBLE_EQ(s.config.dx, 0.002);

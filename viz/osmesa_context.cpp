@@ -31,16 +31,26 @@ class OsMesaContext : public GlContext {
       if (context_) break;
     }
     if (!context_) throw std::runtime_error("OSMesa cannot create an OpenGL 3.3+ core context");
-    if (!make_current(context_, buffer_.data(), GL_UNSIGNED_BYTE, kSide, kSide))
+    if (!make_current(context_, buffer_.data(), GL_UNSIGNED_BYTE, kSide, kSide)) {
+      release();
       throw std::runtime_error("OSMesaMakeCurrent failed");
+    }
     gl_.load([&](const char* name) { return reinterpret_cast<void*>(get_proc(name)); });
   }
 
-  ~OsMesaContext() override { lib_.function<DestroyContext>("OSMesaDestroyContext")(context_); }
+  ~OsMesaContext() override { release(); }
 
   std::string api() const override { return "osmesa"; }
 
  private:
+  // Unbinds the context from this thread (so that Mesa drops its framebuffer for our buffer) and
+  // destroys it. What Mesa keeps after that (its compiler's and driver's state, loaded once per
+  // process) is the library's own: tests/lsan_suppressions.txt.
+  void release() {
+    lib_.function<MakeCurrent>("OSMesaMakeCurrent")(nullptr, nullptr, 0, 0, 0);
+    lib_.function<DestroyContext>("OSMesaDestroyContext")(context_);
+  }
+
   static constexpr int kSide = 16;
   SharedLibrary lib_;
   std::vector<unsigned char> buffer_ = std::vector<unsigned char>(4 * kSide * kSide);

@@ -5,7 +5,6 @@
 #include <sstream>
 
 namespace firn::sweep {
-namespace {
 
 std::optional<std::string> file_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -14,6 +13,8 @@ std::optional<std::string> file_text(const std::string& path) {
   s << in.rdbuf();
   return s.str();
 }
+
+namespace {
 
 std::optional<double> number(const std::optional<std::string>& text) {
   if (!text || text->empty()) return std::nullopt;

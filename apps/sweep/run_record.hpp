@@ -21,6 +21,9 @@ struct RunRecord {
 // unquoted and unescaped); none when the key is absent or null.
 std::optional<std::string> json_value(const std::string& json, const std::string& key);
 
+// The whole file; none when it cannot be read.
+std::optional<std::string> file_text(const std::string& path);
+
 // Fills status, the counts and the metrics from DIR/summary.json and DIR/metrics.csv.
 void read_run_outputs(const std::string& dir, RunRecord& record);
 

@@ -141,6 +141,7 @@ class TableReader {
     toml::array o;
     for (int d = 0; d < 3; ++d) {
       p[d] = to_number(*a->get(std::size_t(d)), k, key);
+      if (!std::isfinite(p[d])) fail(key, std::string("must be finite (") + "xyz"[d] + " is " + number_text(p[d]) + ")");
       o.push_back(p[d]);
     }
     out_.insert_or_assign(key, o);
@@ -446,16 +447,16 @@ MaterialInfo read_material(const Context& ctx, const std::string& name, const to
 
 int SceneSpec::per_axis() const { return int(std::lround(std::cbrt(double(particles_per_cell)))); }
 
-LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
+namespace {
+
+SceneError syntax_error(const std::string& path, const toml::parse_error& e) {
+  const auto& b = e.source().begin;
+  std::string what(e.description());
+  return SceneError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": TOML syntax: " + what);
+}
+
+LoadedScene read_scene(const std::string& path, toml::table root, const SceneOptions& options) {
   Context ctx{path, {}};
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    const auto& b = e.source().begin;
-    std::string what(e.description());
-    throw SceneError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": TOML syntax: " + what);
-  }
   for (const std::string& a : options.overrides) apply_override(ctx, root, a);
 
   const std::vector<std::string> sections = {"simulation", "walls", "materials", "bodies",  "colliders",
@@ -752,6 +753,24 @@ LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
        << out << "\n";
   loaded.resolved_toml = text.str();
   return loaded;
+}
+
+}  // namespace
+
+LoadedScene load_scene(const std::string& path, const SceneOptions& options) {
+  try {
+    return read_scene(path, toml::parse_file(path), options);
+  } catch (const toml::parse_error& e) {
+    throw syntax_error(path, e);
+  }
+}
+
+LoadedScene load_scene_text(const std::string& text, const std::string& path, const SceneOptions& options) {
+  try {
+    return read_scene(path, toml::parse(text, path), options);
+  } catch (const toml::parse_error& e) {
+    throw syntax_error(path, e);
+  }
 }
 
 }  // namespace firn

@@ -27,5 +27,7 @@ struct LoadedScene {
 };
 
 LoadedScene load_scene(const std::string& path, const SceneOptions& options);
+// The same for a scene's text; `path` names it in messages and gives the scene its name.
+LoadedScene load_scene_text(const std::string& text, const std::string& path, const SceneOptions& options);
 
 }  // namespace firn

@@ -362,8 +362,9 @@ std::string scene_reference_markdown() {
     for (const auto& [key, value] : p.values) {
       md << (first ? "" : ", ") << key << " = ";
       first = false;
+      // C++17 lambdas cannot capture a structured binding (clang refuses): capture a name for it.
       const auto param = std::find_if(model->parameters.begin(), model->parameters.end(),
-                                      [&](const MaterialParameter& q) { return q.key == key; });
+                                      [&name = key](const MaterialParameter& q) { return q.key == name; });
       if (param != model->parameters.end() && !param->choices.empty()) md << param->choices.at(std::size_t(value));
       else md << value;
     }
