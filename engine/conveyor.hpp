@@ -14,6 +14,7 @@
 #include "engine/particle_fill.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/simulation.hpp"
+#include "kernels/hd.hpp"
 #include "kernels/particle_attributes.hpp"
 
 namespace firn {
@@ -41,7 +42,7 @@ class Conveyor {
     const T outflow = T(spec_.outflow), margin = T(kMargin * dx_);
     const T lo[3] = {T(domain_min_[0]) + margin, T(domain_min_[1]) + margin, T(domain_min_[2]) + margin};
     const T hi[3] = {T(domain_max_[0]) - margin, T(domain_max_[1]) - margin, T(domain_max_[2]) - margin};
-    removed_ += long(sim.remove_particles([=](const ParticleView<T>& pv, std::size_t p) {
+    removed_ += long(sim.remove_particles([=] FIRN_HD_LAMBDA(const ParticleView<T>& pv, std::size_t p) {
       bool out = pv.x[0][p] < outflow;
       for (int d = 0; d < 3; ++d) out = out || pv.x[d][p] < lo[d] || pv.x[d][p] > hi[d];
       return out;

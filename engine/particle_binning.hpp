@@ -14,7 +14,10 @@
 
 #include "engine/aligned_vector.hpp"
 #include "kernels/backend/block_colouring.hpp"
+#include "kernels/binning_view.hpp"
+#include "kernels/combine.hpp"
 #include "kernels/grid_geometry.hpp"
+#include "kernels/hd.hpp"
 #include "kernels/particle_attributes.hpp"
 
 namespace firn {
@@ -45,7 +48,7 @@ class ParticleBinning {
       const int b1 = blocks[1], b2 = blocks[2];
       const std::size_t bad = backend.parallel_reduce(
           "bin.keys", materials[m].end - begin, kNone,
-          [=](std::size_t i, std::size_t& acc) {
+          [=] FIRN_HD_LAMBDA(std::size_t i, std::size_t& acc) {
             const std::size_t p = begin + i;
             int bc[3];
             bool inside = true;
@@ -58,7 +61,7 @@ class ParticleBinning {
             keys[p] = key0 + std::uint32_t((bc[0] * b1 + bc[1]) * b2 + bc[2]);
             if (!inside && p < acc) acc = p;
           },
-          [](std::size_t& a, std::size_t b) { a = b < a ? b : a; });
+          Min{});
       if (bad < first_bad) first_bad = bad;
     }
     return first_bad;
@@ -72,9 +75,9 @@ class ParticleBinning {
     counts_.assign(parts * K, 0);
     const std::uint32_t* keys = keys_.data();
     std::uint32_t* counts = counts_.data();
-    auto part_begin = [=](std::size_t t) { return t * n / parts; };
-    backend.parallel_for("bin.count", parts, [=](std::size_t t) {
-      for (std::size_t p = part_begin(t); p < part_begin(t + 1); ++p) ++counts[t * K + keys[p]];
+    // Part t counts particles [t n / parts, (t + 1) n / parts).
+    backend.parallel_for("bin.count", parts, [=] FIRN_HD_LAMBDA(std::size_t t) {
+      for (std::size_t p = t * n / parts; p < (t + 1) * n / parts; ++p) ++counts[t * K + keys[p]];
     });
     // Exclusive prefix, bucket-major then part: part t's particles of bucket k follow part t-1's.
     bucket_begin_.resize(K + 1);
@@ -90,8 +93,8 @@ class ParticleBinning {
     bucket_begin_[K] = running;
     order_.resize(n);
     std::uint32_t* order = order_.data();
-    backend.parallel_for("bin.scatter", parts, [=](std::size_t t) {
-      for (std::size_t p = part_begin(t); p < part_begin(t + 1); ++p) order[counts[t * K + keys[p]]++] = std::uint32_t(p);
+    backend.parallel_for("bin.scatter", parts, [=] FIRN_HD_LAMBDA(std::size_t t) {
+      for (std::size_t p = t * n / parts; p < (t + 1) * n / parts; ++p) order[counts[t * K + keys[p]]++] = std::uint32_t(p);
     });
     collect_blocks(blocks);
   }
@@ -106,8 +109,7 @@ class ParticleBinning {
     if (n < 2) return false;
     const std::size_t breaks = backend.parallel_reduce(
         "bin.breaks", n - 1, std::size_t(0),
-        [=](std::size_t i, std::size_t& acc) { acc += order[i + 1] != order[i] + 1; },
-        [](std::size_t& a, std::size_t b) { a += b; });
+        [=] FIRN_HD_LAMBDA(std::size_t i, std::size_t& acc) { acc += order[i + 1] != order[i] + 1; }, Sum{});
     return breaks * kReorderRun > n;
   }
 
@@ -115,15 +117,12 @@ class ParticleBinning {
   template <class Backend>
   void reordered(const Backend& backend) {
     std::uint32_t* order = order_.data();
-    backend.parallel_for("bin.identity", order_.size(), [=](std::size_t i) { order[i] = std::uint32_t(i); });
+    backend.parallel_for("bin.identity", order_.size(), [=] FIRN_HD_LAMBDA(std::size_t i) { order[i] = std::uint32_t(i); });
   }
 
   const std::uint32_t* order() const { return order_.data(); }
-  // Sorted positions of the m-th non-empty material's particles in block b:
-  // [bucket_begin(m, b), bucket_end(m, b)).
-  std::uint32_t bucket_begin(std::size_t m, std::uint32_t b) const { return bucket_begin_[m * block_count_ + b]; }
-  std::uint32_t bucket_end(std::size_t m, std::uint32_t b) const { return bucket_begin_[m * block_count_ + b + 1]; }
-  std::size_t material_count() const { return material_count_; }  // the non-empty ones
+  // The order and the buckets of sorted positions per (non-empty material, block), for kernels.
+  BinningView view() const { return BinningView{order_.data(), bucket_begin_.data(), block_count_, material_count_}; }
   // Blocks holding particles, in increasing id, and the same grouped by parity colour.
   const std::vector<std::uint32_t>& particle_blocks() const { return particle_blocks_; }
   backend::BlockColouring colouring() const {

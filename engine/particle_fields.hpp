@@ -6,24 +6,14 @@
 
 #include "kernels/mat3.hpp"
 #include "kernels/particle_attributes.hpp"
+#include "kernels/particle_state.hpp"
 
 namespace firn {
-
-// det of the whole deformation gradient F_E F_P of particle p.
-template <class T>
-T particle_total_J(const ParticleView<T>& pv, std::size_t p) {
-  Mat3<T> F;
-  for (int q = 0; q < 9; ++q) F.m[q] = pv.F[q][p];
-  const T J = determinant(F);
-  return pv.Jp ? J * pv.Jp[p] : J;
-}
 
 // von Mises stress sqrt(3/2 s:s) of the Cauchy stress sigma = tau / J_E (tau from the last step).
 template <class T>
 T particle_von_mises(const ParticleView<T>& pv, std::size_t p) {
-  Mat3<T> F;
-  for (int q = 0; q < 9; ++q) F.m[q] = pv.F[q][p];
-  const T inv_J = T(1) / determinant(F);
+  const T inv_J = T(1) / determinant(particle_F(pv, p));
   const T t[6] = {pv.tau[0][p], pv.tau[1][p], pv.tau[2][p], pv.tau[3][p], pv.tau[4][p], pv.tau[5][p]};
   const T mean = (t[0] + t[1] + t[2]) / T(3);
   const T s2 = (t[0] - mean) * (t[0] - mean) + (t[1] - mean) * (t[1] - mean) + (t[2] - mean) * (t[2] - mean) +

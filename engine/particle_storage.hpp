@@ -7,9 +7,19 @@
 #include <utility>
 
 #include "engine/aligned_vector.hpp"
+#include "kernels/hd.hpp"
 #include "kernels/particle_attributes.hpp"
 
 namespace firn {
+
+// out[i] = in[order[i]]: one column of ParticleStorage::gather.
+template <class S>
+struct GatherCopy {
+  S* out;
+  const S* in;
+  const std::uint32_t* order;
+  FIRN_HD void operator()(std::size_t i) const { out[i] = in[order[i]]; }
+};
 
 template <class T>
 class ParticleStorage {
@@ -86,7 +96,7 @@ class ParticleStorage {
     AlignedVector<S> out(count);
     S* o = out.data();
     const S* in = col.data();
-    backend.parallel_for("particles.gather", count, [=](std::size_t i) { o[i] = in[order[i]]; });
+    backend.parallel_for("particles.gather", count, GatherCopy<S>{o, in, order});
     col.swap(out);
   }
 

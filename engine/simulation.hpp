@@ -29,19 +29,27 @@
 #include "engine/elastic_moduli.hpp"
 #include "engine/materials.hpp"
 #include "engine/particle_binning.hpp"
+#include "engine/particle_fields.hpp"
 #include "engine/particle_fill.hpp"
 #include "engine/particle_storage.hpp"
 #include "engine/sparse_grid.hpp"
 #include "engine/stability_guard.hpp"
-#include "kernels/backend/schedule.hpp"
-#include "kernels/block_window.hpp"
+#include "kernels/binning_view.hpp"
 #include "kernels/boundary_conditions.hpp"
-#include "engine/particle_fields.hpp"
 #include "kernels/colliders.hpp"
-#include "kernels/g2p.hpp"
+#include "kernels/combine.hpp"
 #include "kernels/grid_update.hpp"
-#include "kernels/p2g.hpp"
+#include "kernels/guard_summary.hpp"
+#include "kernels/hd.hpp"
+#include "kernels/load_ramp.hpp"
+#include "kernels/motion_sums.hpp"
+#include "kernels/particle_state.hpp"
 #include "kernels/shape_functions.hpp"
+#include "kernels/step/constitutive_update.hpp"
+#include "kernels/step/elastic_energy.hpp"
+#include "kernels/step/g2p_gather.hpp"
+#include "kernels/step/grid_update_slots.hpp"
+#include "kernels/step/p2g_scatter.hpp"
 #include "kernels/transfer.hpp"
 
 namespace firn {
@@ -160,8 +168,7 @@ class Simulation {
     const ParticleView<T> pv = storage_.view();
     const std::size_t doomed = backend_.parallel_reduce(
         "particles.count_removed", pv.n, std::size_t(0),
-        [=](std::size_t p, std::size_t& acc) { acc += remove(pv, p) ? 1 : 0; },
-        [](std::size_t& a, std::size_t b) { a += b; });
+        [=] FIRN_HD_LAMBDA(std::size_t p, std::size_t& acc) { acc += remove(pv, p) ? 1 : 0; }, Sum{});
     if (doomed == 0) return 0;
     std::vector<std::uint32_t> keep;
     keep.reserve(pv.n - doomed);
@@ -236,10 +243,10 @@ class Simulation {
     const ParticleView<T> pv = storage_.view();
     max_speed_ = backend_.parallel_reduce(
         "particles.max_speed", pv.n, T(0),
-        [=](std::size_t p, T& acc) {
+        [=] FIRN_HD_LAMBDA(std::size_t p, T& acc) {
           acc = std::max(acc, std::sqrt(pv.v[0][p] * pv.v[0][p] + pv.v[1][p] * pv.v[1][p] + pv.v[2][p] * pv.v[2][p]));
         },
-        [](T& a, T b) { a = std::max(a, b); });
+        Max{});
     double lightest = std::numeric_limits<double>::max();
     for (std::size_t p = 0; p < pv.n; ++p) lightest = std::min(lightest, double(pv.mass[p]));
     min_node_mass_ = T(kEmptyNodeMassFraction * lightest);
@@ -285,26 +292,9 @@ class Simulation {
   }
 
   Diagnostics diagnostics() {
-    struct Sums {
-      double ke = 0, p[3] = {0, 0, 0}, max_speed = 0, min_J = std::numeric_limits<double>::max();
-    };
     const ParticleView<T> pv = storage_.view();
-    const Sums s = backend_.parallel_reduce(
-        "diagnostics.motion", pv.n, Sums{},
-        [=](std::size_t p, Sums& acc) {
-          const double m = pv.mass[p], v[3] = {pv.v[0][p], pv.v[1][p], pv.v[2][p]};
-          const double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-          acc.ke += 0.5 * m * v2;
-          for (int d = 0; d < 3; ++d) acc.p[d] += m * v[d];
-          acc.max_speed = std::max(acc.max_speed, std::sqrt(v2));
-          acc.min_J = std::min(acc.min_J, double(total_J(pv, p)));
-        },
-        [](Sums& a, const Sums& b) {
-          a.ke += b.ke;
-          for (int d = 0; d < 3; ++d) a.p[d] += b.p[d];
-          a.max_speed = std::max(a.max_speed, b.max_speed);
-          a.min_J = std::min(a.min_J, b.min_J);
-        });
+    const MotionSums s = backend_.parallel_reduce("diagnostics.motion", pv.n, MotionSums{}, MotionTerm<T>{pv},
+                                                  MergeMotionSums{});
     Diagnostics out;
     out.kinetic_energy = s.ke;
     for (int d = 0; d < 3; ++d) out.momentum[d] = s.p[d];
@@ -315,13 +305,9 @@ class Simulation {
       const std::size_t begin = m.range.begin;
       std::visit(
           [&](const auto& model) {
-            out.elastic_energy += backend_.parallel_reduce(
-                "diagnostics.elastic_energy", m.range.end - begin, 0.0,
-                [=](std::size_t i, double& acc) {
-                  const std::size_t p = begin + i;
-                  acc += double(pv.vol0[p]) * double(model.energy_density(load_F(pv, p), load_state(pv, p)));
-                },
-                [](double& a, double b) { a += b; });
+            using Model = std::decay_t<decltype(model)>;
+            out.elastic_energy += backend_.parallel_reduce("diagnostics.elastic_energy", m.range.end - begin, 0.0,
+                                                           ElasticEnergy<T, Model>{pv, model, begin}, Sum{});
           },
           m.model);
     }
@@ -392,32 +378,38 @@ class Simulation {
     double wave_speed;  // max over its particles of sqrt(p_wave_modulus / density), last stress pass
   };
 
-  static Mat3<T> load_F(const ParticleView<T>& pv, std::size_t p) {
-    Mat3<T> F;
-    for (int q = 0; q < 9; ++q) F.m[q] = pv.F[q][p];
-    return F;
-  }
-  static PlasticState<T> load_state(const ParticleView<T>& pv, std::size_t p) {
-    PlasticState<T> s;
-    if (pv.alpha) s.alpha = pv.alpha[p];
-    if (pv.Jp) s.Jp = pv.Jp[p];
-    return s;
-  }
-
   std::vector<ParticleRange> ranges() const {
     std::vector<ParticleRange> r;
     for (const auto& m : materials_) r.push_back(m.range);
     return r;
   }
 
+  // One step: bin -> constitutive update -> P2G -> grid update -> G2P with the stability guard.
   template <class ShapeT, Transfer kTransfer>
   void step_impl(T dt) {
-    constexpr int kSpan = kBlockSize + ShapeT::kSupport - 1;
-    using Ch = GridChannels<kTransfer>;
+    bin<ShapeT>(dt);
+    update_stress(dt);
     const GridGeometry<T> g = grid_.geometry();
+    const ParticleView<T> pv = storage_.view();
+    const SparseGridView<T> gv = grid_.view();
+    const BinningView bins = binning_.view();
+    backend_.scatter_blocks("p2g", binning_.colouring(), P2GScatter<T, ShapeT, kTransfer>{pv, gv, bins, g, dt});
+    pose_colliders(dt);
+    backend_.parallel_for("grid_update", grid_.active_count(), GridUpdateSlots<T, kTransfer>{grid_.slots(), &grid_params_});
+    collect_reactions(double(dt));
+    const std::vector<std::uint32_t>& blocks = binning_.particle_blocks();
+    const GuardSummary<T> guard =
+        backend_.gather_blocks("g2p", blocks.data(), blocks.size(),
+                               G2PGather<T, ShapeT, kTransfer>{pv, gv, bins, g, dt, T(config_.flip_alpha)}, MergeGuard{});
+    if (guard.reason != GuardReason::none) fail(guard, dt);
+    max_speed_ = guard.max_speed;
+  }
 
-    // 1. Bin particles by block; reorder the arrays when the walk has become scattered.
-    const std::size_t outside = binning_.compute_keys<ShapeT>(storage_.view(), ranges(), g, grid_.blocks(), backend_);
+  // Bins particles by block, reorders the arrays when the walk has become scattered and activates
+  // the grid blocks the particles touch.
+  template <class ShapeT>
+  void bin(T dt) {
+    const std::size_t outside = binning_.compute_keys<ShapeT>(storage_.view(), ranges(), grid_.geometry(), grid_.blocks(), backend_);
     if (outside != ParticleBinning::kNone) {
       GuardSummary<T> s;
       s.offender = outside;
@@ -430,48 +422,22 @@ class Simulation {
       binning_.reordered(backend_);
     }
     grid_.activate(binning_.particle_blocks(), backend_);
-    const ParticleView<T> pv = storage_.view();
+  }
 
-    // 2. Constitutive update, one launch per material range: the return mapping of plastic models
-    //    (projecting the previous G2P's trial F), then the Kirchhoff stress. A non-finite stress
-    //    (where NaNs are born) names its particle before P2G spreads it to the neighbours. The
-    //    largest current P-wave modulus sets the next time step.
+  // The constitutive update, one launch per material range (kernels/step/constitutive_update.hpp);
+  // a non-finite stress stops the run, and the largest P-wave modulus sets the wave speed.
+  void update_stress(T dt) {
+    const ParticleView<T> pv = storage_.view();
     std::size_t bad_stress = ParticleBinning::kNone;
     for (auto& m : materials_) {
       if (m.range.end == m.range.begin) continue;  // no launch for a material without particles
-      const std::size_t begin = m.range.begin;
       std::visit(
           [&](const auto& model) {
             using Model = std::decay_t<decltype(model)>;
-            const ConstitutiveSummary r = backend_.parallel_reduce(
-                constitutive_launch_name<Model>(), m.range.end - begin, ConstitutiveSummary{},
-                [=](std::size_t i, ConstitutiveSummary& acc) {
-                  const std::size_t p = begin + i;
-                  Mat3<T> F = load_F(pv, p);
-                  PlasticState<T> state = load_state(pv, p);
-                  if constexpr (Model::kPlastic) {
-                    if (model.project(F, state)) {
-                      for (int q = 0; q < 9; ++q) pv.F[q][p] = F.m[q];
-                      if constexpr (Model::kUsesAlpha) pv.alpha[p] = state.alpha;
-                      if constexpr (Model::kUsesJp) pv.Jp[p] = state.Jp;
-                    }
-                  }
-                  const Mat3<T> tau = model.kirchhoff(F, state);
-                  pv.tau[0][p] = tau(0, 0);
-                  pv.tau[1][p] = tau(1, 1);
-                  pv.tau[2][p] = tau(2, 2);
-                  pv.tau[3][p] = tau(0, 1);
-                  pv.tau[4][p] = tau(1, 2);
-                  pv.tau[5][p] = tau(2, 0);
-                  if (!std::isfinite(tau(0, 0) + tau(1, 1) + tau(2, 2) + tau(0, 1) + tau(1, 2) + tau(2, 0)) &&
-                      p < acc.first_bad)
-                    acc.first_bad = p;
-                  acc.max_modulus = std::max(acc.max_modulus, double(model.p_wave_modulus(state)));
-                },
-                [](ConstitutiveSummary& a, const ConstitutiveSummary& b) {
-                  a.first_bad = std::min(a.first_bad, b.first_bad);
-                  a.max_modulus = std::max(a.max_modulus, b.max_modulus);
-                });
+            const ConstitutiveSummary r =
+                backend_.parallel_reduce(constitutive_launch_name<Model>(), m.range.end - m.range.begin,
+                                         ConstitutiveSummary{}, ConstitutiveUpdate<T, Model>{pv, model, m.range.begin},
+                                         MergeConstitutive{});
             bad_stress = std::min(bad_stress, r.first_bad);
             m.wave_speed = std::sqrt(r.max_modulus / m.info.density);
           },
@@ -480,28 +446,16 @@ class Simulation {
     if (bad_stress != ParticleBinning::kNone) {
       GuardSummary<T> s;
       s.offender = bad_stress;
-      s.reason = determinant(load_F(pv, bad_stress)) <= T(0) ? GuardReason::inverted : GuardReason::not_finite;
+      s.reason = determinant(particle_F(pv, bad_stress)) <= T(0) ? GuardReason::inverted : GuardReason::not_finite;
       fail(s, dt);
     }
+  }
 
-    // 3. P2G: each block accumulates into an L1-sized scratch, flushed colour by colour.
-    const SparseGridView<T> gv = grid_.view();
-    const ParticleBinning& bins = binning_;
-    const std::uint32_t* order = bins.order();
-    const int* nb = grid_.blocks();
-    const int by_count = nb[1], bz_count = nb[2];
-    backend_.scatter_blocks("p2g", bins.colouring(), [&, pv, gv, g, dt, order](std::uint32_t b) {
-      BlockScratch<T, kSpan, Ch::kCount> scratch;
-      scratch.reset(int(b) / (by_count * bz_count), (int(b) / bz_count) % by_count, int(b) % bz_count);
-      for (std::size_t m = 0; m < bins.material_count(); ++m)
-        for (std::uint32_t s = bins.bucket_begin(m, b), e = bins.bucket_end(m, b); s < e; ++s)
-          p2g_particle<T, ShapeT, kTransfer>(pv, order[s], g, dt, scratch);
-      scratch.flush(gv);
-    });
-
-    // 4. Grid update, with the colliders posed at the end of the step; their reactions are summed
-    //    per block, then over blocks in slot order (the same sums for any thread count).
-    GridUpdateParams<T> up{};
+  // The grid update's parameters, with the colliders posed at the end of the step; their reactions
+  // are summed per block, then over blocks in slot order (the same sums for any thread count).
+  void pose_colliders(T dt) {
+    const GridGeometry<T> g = grid_.geometry();
+    GridUpdateParams<T>& up = grid_params_;
     up.dt = dt;
     up.dx = g.dx;
     up.min_mass = min_node_mass_;
@@ -521,42 +475,11 @@ class Simulation {
     reactions_.assign(slots * colliders_.size() * kReactionComponents, T(0));
     up.reactions = reactions_.data();
     up.footprint_collider = footprint_collider_;
+    up.footprint = nullptr;
     if (footprint_collider_ >= 0) {
       footprint_blocks_.assign(slots * kBlockSize * kBlockSize, T(0));
       up.footprint = footprint_blocks_.data();
     }
-    SparseGrid<T>& grid = grid_;
-    backend_.parallel_for("grid_update", slots, [&grid, up](std::size_t s) {
-      grid_update_block<T, kTransfer>(grid.slot_data(s), grid.slot_coords(s), s, up);
-    });
-    collect_reactions(double(dt));
-
-    // 5. G2P with the stability guard, block by block; summaries combined in block order.
-    const std::vector<std::uint32_t>& blocks = bins.particle_blocks();
-    checks_.assign(blocks.size(), GuardSummary<T>{});
-    GuardSummary<T>* checks = checks_.data();
-    const T alpha = T(config_.flip_alpha);
-    backend_.parallel_for(
-        "g2p", blocks.size(),
-        [&, pv, gv, g, dt, order, checks, alpha](std::size_t i) {
-          const std::uint32_t b = blocks[i];
-          BlockGather<T, kSpan, Ch::kGatherCount> window;
-          window.load(gv, Ch::kVelocity, int(b) / (by_count * bz_count), (int(b) / bz_count) % by_count,
-                      int(b) % bz_count);
-          GuardSummary<T> summary;
-          for (std::size_t m = 0; m < bins.material_count(); ++m)
-            for (std::uint32_t s = bins.bucket_begin(m, b), e = bins.bucket_end(m, b); s < e; ++s) {
-              const std::size_t p = order[s];
-              const ParticleCheck<T> c = g2p_particle<T, ShapeT, kTransfer>(pv, p, g, dt, alpha, window);
-              summary.add(p, c.speed, c.J, c.moved, g.dx);
-            }
-          checks[i] = summary;
-        },
-        backend::Schedule::uneven);
-    GuardSummary<T> total;
-    for (const auto& c : checks_) total.merge(c);
-    if (total.reason != GuardReason::none) fail(total, dt);
-    max_speed_ = total.max_speed;
   }
 
   // Sums the per-block collider reactions and footprint columns of the last grid update.
@@ -629,17 +552,8 @@ class Simulation {
       for (int d = 0; d < 3; ++d) accel[3 * (k + 1) + d] = T(f * l.accel[d]);
     }
     if (!changed) return;
-    const ParticleView<T> pv = storage_.view();
-    const T* table = accel.data();
-    backend_.parallel_for("loads.ramp", pv.n, [=](std::size_t p) {
-      for (int d = 0; d < 3; ++d) pv.body_accel[d][p] = table[3 * pv.load[p] + d];
-    });
+    backend_.parallel_for("loads.ramp", storage_.size(), LoadRamp<T>{storage_.view(), accel.data()});
   }
-
-  struct ConstitutiveSummary {
-    std::size_t first_bad = ParticleBinning::kNone;
-    double max_modulus = 0;
-  };
 
   // "constitutive.<model>": a string literal per model type, as launch names must outlive profiles.
   template <class Model>
@@ -667,7 +581,8 @@ class Simulation {
   ParticleStorage<T> storage_;
   std::vector<Material> materials_;
   std::vector<ColliderBody> colliders_;
-  std::vector<T> reactions_;        // [slot][collider][6] of the last grid update
+  GridUpdateParams<T> grid_params_{};  // of the last grid update
+  std::vector<T> reactions_;           // [slot][collider][6] of the last grid update
   int footprint_collider_ = -1;
   std::vector<T> footprint_blocks_;  // [slot][16]
   FootprintMap footprint_;
@@ -675,7 +590,6 @@ class Simulation {
   std::vector<int> staged_material_;  // material of each particle added since the last prepare()
   SparseGrid<T> grid_;
   ParticleBinning binning_;
-  std::vector<GuardSummary<T>> checks_;
   T max_speed_ = T(0);
   // A node with less than this fraction of the lightest particle's mass counts as empty: its
   // weight in any gather is below 1e-10 and its velocity would be rounding noise.

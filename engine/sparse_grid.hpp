@@ -10,6 +10,8 @@
 #include "engine/aligned_vector.hpp"
 #include "kernels/block_window.hpp"
 #include "kernels/grid_geometry.hpp"
+#include "kernels/grid_slots.hpp"
+#include "kernels/hd.hpp"
 
 namespace firn {
 
@@ -62,7 +64,7 @@ class SparseGrid {
     const std::size_t per_block = std::size_t(channels_) * kBlockNodes;
     data_.resize(slots_.size() * per_block);
     T* data = data_.data();
-    backend.parallel_for("grid.clear", slots_.size(), [=](std::size_t s) {
+    backend.parallel_for("grid.clear", slots_.size(), [=] FIRN_HD_LAMBDA(std::size_t s) {
       for (std::size_t i = 0; i < per_block; ++i) data[s * per_block + i] = T(0);
     });
   }
@@ -70,7 +72,7 @@ class SparseGrid {
   SparseGridView<T> view() {
     return SparseGridView<T>{data_.data(), channels_, map_.data(), {blocks_[0], blocks_[1], blocks_[2]}};
   }
-  T* slot_data(std::size_t s) { return data_.data() + s * std::size_t(channels_) * kBlockNodes; }
+  GridSlotsView<T> slots() { return GridSlotsView<T>{data_.data(), coords_.data(), channels_}; }
   const int* slot_coords(std::size_t s) const { return coords_.data() + 3 * s; }
 
  private:

@@ -1,11 +1,14 @@
-// Block-local windows of the sparse grid used by the CPU scatter and gather strategies.
+// Block-local windows of the sparse grid used by the scatter and gather strategies.
 // A particle binned to block b (by its stencil base node) touches nodes 4b .. 4b + kSpan - 1,
 // kSpan = 4 + support - 1, all inside blocks b + {0,1}^3. P2G accumulates a block's particles into
-// a small dense scratch (L1-resident, no atomics) and then adds it to the grid; G2P first copies
-// the window's velocities out of the sparse grid so the particle loop reads a dense array.
+// a small dense scratch (L1-resident on the CPU, shared memory on a GPU; no atomics) and then adds
+// it to the grid; G2P first copies the window's velocities out of the sparse grid so the particle
+// loop reads a dense array. Both windows work node by node (`flush_node`, `load_node`) so that a
+// GPU thread block can share the work; `flush` and `load` are the single-thread loops over them.
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "kernels/grid_geometry.hpp"
 #include "kernels/hd.hpp"
@@ -24,37 +27,51 @@ struct SparseGridView {
   FIRN_HD T* block(int bx, int by, int bz) const {
     return data + static_cast<long>(block_map[(bx * blocks[1] + by) * blocks[2] + bz]) * channels * kBlockNodes;
   }
+  // Integer coordinates of block id b = (bx * blocks[1] + by) * blocks[2] + bz.
+  FIRN_HD void block_coords(std::uint32_t b, int c[3]) const {
+    c[0] = int(b) / (blocks[1] * blocks[2]);
+    c[1] = (int(b) / blocks[2]) % blocks[1];
+    c[2] = int(b) % blocks[2];
+  }
 };
+
+// The window's local node n = (a kSpan + b) kSpan + c as global node indices from `origin`.
+template <int kSpan>
+FIRN_HD void window_node(const int origin[3], int n, int g[3]) {
+  g[0] = origin[0] + n / (kSpan * kSpan);
+  g[1] = origin[1] + (n / kSpan) % kSpan;
+  g[2] = origin[2] + n % kSpan;
+}
 
 template <class T, int kSpan, int kChannels>
 struct BlockScratch {
+  static constexpr int kNodes = kSpan * kSpan * kSpan;
   int origin[3];  // global index of local node (0, 0, 0)
-  T values[kSpan * kSpan * kSpan * kChannels];
+  T values[kNodes * kChannels];
 
-  FIRN_HD void reset(int bx, int by, int bz) {
-    origin[0] = bx * kBlockSize;
-    origin[1] = by * kBlockSize;
-    origin[2] = bz * kBlockSize;
-    for (int i = 0; i < kSpan * kSpan * kSpan * kChannels; ++i) values[i] = T(0);
+  FIRN_HD void set_origin(const int block[3]) {
+    for (int d = 0; d < 3; ++d) origin[d] = block[d] * kBlockSize;
+  }
+  FIRN_HD void reset(const int block[3]) {
+    set_origin(block);
+    for (int i = 0; i < kNodes * kChannels; ++i) values[i] = T(0);
   }
   // The scatter target of p2g_particle.
   FIRN_HD void add(int i, int j, int k, const T* v) {
     T* node = values + (((i - origin[0]) * kSpan + (j - origin[1])) * kSpan + (k - origin[2])) * kChannels;
     for (int c = 0; c < kChannels; ++c) node[c] += v[c];
   }
-  // Adds the scratch into the grid. Only one block of a parity colour touches these nodes.
+  // Adds local node n into the grid. Only one block of a parity colour touches these nodes.
+  FIRN_HD void flush_node(const SparseGridView<T>& grid, int n) const {
+    int g[3];
+    window_node<kSpan>(origin, n, g);
+    T* blk = grid.block(g[0] >> kBlockShift, g[1] >> kBlockShift, g[2] >> kBlockShift);
+    const int l = local_node(g[0] & (kBlockSize - 1), g[1] & (kBlockSize - 1), g[2] & (kBlockSize - 1));
+    const T* v = values + n * kChannels;
+    for (int ch = 0; ch < kChannels; ++ch) blk[ch * kBlockNodes + l] += v[ch];
+  }
   FIRN_HD void flush(const SparseGridView<T>& grid) const {
-    for (int a = 0; a < kSpan; ++a)
-      for (int b = 0; b < kSpan; ++b) {
-        const int gi = origin[0] + a, gj = origin[1] + b;
-        for (int c = 0; c < kSpan; ++c) {
-          const int gk = origin[2] + c;
-          T* blk = grid.block(gi >> kBlockShift, gj >> kBlockShift, gk >> kBlockShift);
-          const int l = local_node(gi & (kBlockSize - 1), gj & (kBlockSize - 1), gk & (kBlockSize - 1));
-          const T* v = values + ((a * kSpan + b) * kSpan + c) * kChannels;
-          for (int ch = 0; ch < kChannels; ++ch) blk[ch * kBlockNodes + l] += v[ch];
-        }
-      }
+    for (int n = 0; n < kNodes; ++n) flush_node(grid, n);
   }
 };
 
@@ -62,30 +79,31 @@ struct BlockScratch {
 // grid's last channel read as zero.
 template <class T, int kSpan, int kChannels>
 struct BlockGather {
+  static constexpr int kNodes = kSpan * kSpan * kSpan;
   int origin[3];
-  T values[kSpan * kSpan * kSpan * kChannels];
+  T values[kNodes * kChannels];
 
-  FIRN_HD void load(const SparseGridView<T>& grid, int first, int bx, int by, int bz) {
-    origin[0] = bx * kBlockSize;
-    origin[1] = by * kBlockSize;
-    origin[2] = bz * kBlockSize;
-    for (int a = 0; a < kSpan; ++a)
-      for (int b = 0; b < kSpan; ++b) {
-        const int gi = origin[0] + a, gj = origin[1] + b;
-        for (int c = 0; c < kSpan; ++c) {
-          const int gk = origin[2] + c;
-          const T* blk = grid.block(gi >> kBlockShift, gj >> kBlockShift, gk >> kBlockShift);
-          const int l = local_node(gi & (kBlockSize - 1), gj & (kBlockSize - 1), gk & (kBlockSize - 1));
-          T* v = values + ((a * kSpan + b) * kSpan + c) * kChannels;
-          for (int ch = 0; ch < kChannels; ++ch)
-            v[ch] = first + ch < grid.channels ? blk[(first + ch) * kBlockNodes + l] : T(0);
-        }
-      }
+  FIRN_HD void set_origin(const int block[3]) {
+    for (int d = 0; d < 3; ++d) origin[d] = block[d] * kBlockSize;
+  }
+  FIRN_HD void load_node(const SparseGridView<T>& grid, int first, int n) {
+    int g[3];
+    window_node<kSpan>(origin, n, g);
+    const T* blk = grid.block(g[0] >> kBlockShift, g[1] >> kBlockShift, g[2] >> kBlockShift);
+    const int l = local_node(g[0] & (kBlockSize - 1), g[1] & (kBlockSize - 1), g[2] & (kBlockSize - 1));
+    T* v = values + n * kChannels;
+    for (int ch = 0; ch < kChannels; ++ch) v[ch] = first + ch < grid.channels ? blk[(first + ch) * kBlockNodes + l] : T(0);
+  }
+  FIRN_HD void load(const SparseGridView<T>& grid, int first, const int block[3]) {
+    set_origin(block);
+    for (int n = 0; n < kNodes; ++n) load_node(grid, first, n);
   }
   // The grid source of g2p_particle.
   FIRN_HD const T* node(int i, int j, int k) const {
     return values + (((i - origin[0]) * kSpan + (j - origin[1])) * kSpan + (k - origin[2])) * kChannels;
   }
 };
+
+static_assert(std::is_trivially_copyable_v<SparseGridView<float>>, "views are copied into kernels");
 
 }  // namespace firn

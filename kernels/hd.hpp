@@ -8,3 +8,11 @@
 #else
 #define FIRN_HD inline
 #endif
+
+// A lambda handed to a backend launch: [=] FIRN_HD_LAMBDA (std::size_t i) { ... }. Device-callable
+// under nvcc (--extended-lambda); the step's stages are named functors instead (kernels/step/).
+#if defined(__CUDACC__)
+#define FIRN_HD_LAMBDA __host__ __device__
+#else
+#define FIRN_HD_LAMBDA
+#endif

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -21,8 +22,37 @@
 #include "engine/scene/scene.hpp"
 #include "engine/scene/scene_builder.hpp"
 #include "engine/simulation.hpp"
+#include "kernels/hd.hpp"
+#include "kernels/particle_attributes.hpp"
 
 namespace firn {
+
+// The tire's snow counts as the term of a parallel_reduce: particles displaced farther than
+// sqrt(limit2) from where the ground would have carried them (x0 - shift e_x), and particles inside
+// the tread (within sqrt(radius2) of the axle, half_width of its mid-plane).
+struct SnowCounts {
+  std::size_t displaced = 0, accumulated = 0;
+};
+
+template <class T>
+struct SnowCountTerm {
+  ParticleView<T> pv;
+  T cx, cy, cz, radius2, half_width, shift, limit2;
+
+  FIRN_HD void operator()(std::size_t p, SnowCounts& acc) const {
+    const T dx = pv.x[0][p] - (pv.x0[0][p] - shift), dy = pv.x[1][p] - pv.x0[1][p], dz = pv.x[2][p] - pv.x0[2][p];
+    acc.displaced += dx * dx + dy * dy + dz * dz > limit2;
+    const T rx = pv.x[0][p] - cx, ry = pv.x[1][p] - cy;
+    acc.accumulated += rx * rx + ry * ry <= radius2 && std::fabs(pv.x[2][p] - cz) <= half_width;
+  }
+};
+
+struct MergeSnowCounts {
+  FIRN_HD void operator()(SnowCounts& a, const SnowCounts& b) const {
+    a.displaced += b.displaced;
+    a.accumulated += b.accumulated;
+  }
+};
 
 template <class T, class Backend>
 class SceneMetrics {
@@ -87,10 +117,6 @@ class SceneMetrics {
   }
 
  private:
-  struct SnowCounts {
-    std::size_t displaced = 0, accumulated = 0;
-  };
-
   SnowCounts count_snow(Simulation<T, Backend>& sim, double ground_speed) const {
     const ParticleView<T> pv = sim.particles();
     const Collider<double>& c = sim.collider(built_.tire).collider;
@@ -98,18 +124,9 @@ class SceneMetrics {
     const T radius2 = T(scene_.tire->radius * scene_.tire->radius), half_width = T(0.5 * scene_.tire->width);
     const T shift = T(ground_speed * sim.time());
     const T limit2 = T(scene_.metrics.displaced_distance * scene_.metrics.displaced_distance);
-    return sim.backend().parallel_reduce(
-        "metrics.snow", pv.n, SnowCounts{},
-        [=](std::size_t p, SnowCounts& acc) {
-          const T dx = pv.x[0][p] - (pv.x0[0][p] - shift), dy = pv.x[1][p] - pv.x0[1][p], dz = pv.x[2][p] - pv.x0[2][p];
-          acc.displaced += dx * dx + dy * dy + dz * dz > limit2;
-          const T rx = pv.x[0][p] - cx, ry = pv.x[1][p] - cy;
-          acc.accumulated += rx * rx + ry * ry <= radius2 && std::fabs(pv.x[2][p] - cz) <= half_width;
-        },
-        [](SnowCounts& a, const SnowCounts& b) {
-          a.displaced += b.displaced;
-          a.accumulated += b.accumulated;
-        });
+    return sim.backend().parallel_reduce("metrics.snow", pv.n, SnowCounts{},
+                                         SnowCountTerm<T>{pv, cx, cy, cz, radius2, half_width, shift, limit2},
+                                         MergeSnowCounts{});
   }
 
   static std::string number(double v) {

@@ -1,12 +1,13 @@
 // The OpenMP backend: same API as backend::Serial. Results are bitwise identical to the serial
 // backend for any thread count: parallel_for writes disjoint items, reductions use the fixed
 // chunking of reduce_chunks.hpp, and the scatter runs same-colour blocks (which never share a
-// node) concurrently, colour after colour.
+// node) concurrently, colour after colour; the gather combines its per-block results in block order.
 #pragma once
 
 #include <omp.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "kernels/backend/block_colouring.hpp"
@@ -62,6 +63,20 @@ struct OpenMP {
 #pragma omp for schedule(dynamic, 1)
       for (long i = begin; i < end; ++i) f(colouring.blocks[i]);
     }
+  }
+
+  template <class F, class Combine>
+  auto gather_blocks(const char* name, const std::uint32_t* blocks, std::size_t count, const F& f,
+                     Combine&& combine) const {
+    ScopedLaunch timer(profile, name);
+    using R = decltype(f(blocks[0]));
+    std::vector<R> partial(count);
+    const long n = static_cast<long>(count);
+#pragma omp parallel for num_threads(thread_count) schedule(dynamic, 1) if (n >= kMinParallelBlocks)
+    for (long i = 0; i < n; ++i) partial[static_cast<std::size_t>(i)] = f(blocks[i]);
+    R result{};
+    for (const R& p : partial) combine(result, p);
+    return result;
   }
 };
 

@@ -1,8 +1,10 @@
-// The serial reference backend: the same small API as the OpenMP backend (parallel_for,
-// parallel_reduce, scatter over coloured blocks), every launch named, run on one thread.
+// The serial reference backend: the same small API as the OpenMP and CUDA backends (parallel_for,
+// parallel_reduce, a scatter over coloured blocks, a gather over blocks), every launch named, run
+// on one thread.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "kernels/backend/block_colouring.hpp"
 #include "kernels/backend/launch_profile.hpp"
@@ -43,6 +45,17 @@ struct Serial {
     ScopedLaunch timer(profile, name);
     for (int c = 0; c < BlockColouring::kColours; ++c)
       for (std::size_t i = colouring.begin[c]; i < colouring.begin[c + 1]; ++i) f(colouring.blocks[i]);
+  }
+
+  // The G2P gather strategy: f(block) -> R for blocks[0 .. count), combined in block order into
+  // R{} (the identity of combine).
+  template <class F, class Combine>
+  auto gather_blocks(const char* name, const std::uint32_t* blocks, std::size_t count, const F& f,
+                     Combine&& combine) const {
+    ScopedLaunch timer(profile, name);
+    decltype(f(blocks[0])) result{};
+    for (std::size_t i = 0; i < count; ++i) combine(result, f(blocks[i]));
+    return result;
   }
 };
 

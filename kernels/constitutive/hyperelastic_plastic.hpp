@@ -33,11 +33,11 @@
 #pragma once
 
 #include <cmath>
-#include <limits>
 
 #include "kernels/constitutive/j2_hardening.hpp"
 #include "kernels/constitutive/mooney_rivlin.hpp"
 #include "kernels/constitutive/plastic_state.hpp"
+#include "kernels/float_limits.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/mat3.hpp"
 #include "kernels/svd3.hpp"
@@ -99,7 +99,7 @@ struct HyperelasticPlastic {
       const T h = a0 * a1 * a2 - T(1);
       const T step = h / (a0 * a1 + a1 * a2 + a0 * a2);
       x -= step;
-      if (!(step > T(4) * std::numeric_limits<T>::epsilon() * x)) break;
+      if (!(step > T(4) * FloatLimits<T>::kEpsilon * x)) break;
     }
     Vec3<T> s_new;
     for (int d = 0; d < 3; ++d) s_new[d] = std::sqrt(x + c[d]);

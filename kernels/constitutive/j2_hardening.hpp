@@ -9,8 +9,8 @@
 #pragma once
 
 #include <cmath>
-#include <limits>
 
+#include "kernels/float_limits.hpp"
 #include "kernels/hd.hpp"
 
 namespace firn {
@@ -69,7 +69,7 @@ struct J2ReturnSolution {
 // al., Numerical Recipes 3rd ed., sec. 9.4 "rtsafe"), until |f| or the bracket reaches rounding.
 template <class T>
 FIRN_HD J2ReturnSolution<T> solve_j2_return(const J2Hardening<T>& h, T alpha_n, T s_norm, T mu_bar) {
-  constexpr T kEps = std::numeric_limits<T>::epsilon();
+  constexpr T kEps = FloatLimits<T>::kEpsilon;
   constexpr int kMaxIterations = 200;  // bisection alone needs < 2 x (mantissa bits) halvings
   const T sqrt23 = std::sqrt(T(2) / T(3));
   T lo = T(0), hi = s_norm / (T(2) * mu_bar);
