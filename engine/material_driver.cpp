@@ -4,6 +4,8 @@
 #include <type_traits>
 #include <variant>
 
+#include "kernels/step/constitutive_update.hpp"
+
 namespace firn {
 namespace {
 
@@ -12,13 +14,14 @@ struct Point {
   Mat3<double> F_E = Mat3<double>::identity();
   PlasticState<double> state;
   Mat3<double> tau = Mat3<double>::zero();
+  double plastic_work = 0;  // per unit rest volume, since the start
 
   void advance(const MaterialModel<double>& model, const Mat3<double>& increment) {
     F_E = increment * F_E;
     std::visit(
         [&](const auto& m) {
           using Model = std::decay_t<decltype(m)>;
-          if constexpr (Model::kPlastic) m.project(F_E, state);
+          if constexpr (Model::kPlastic) project_measuring_work(m, F_E, state, &plastic_work);
           tau = m.kirchhoff(F_E, state);
         },
         model);
@@ -30,6 +33,7 @@ void record(DriverHistory& h, const Mat3<double>& F, const Point& p) {
   h.F_E.push_back(p.F_E);
   h.tau.push_back(p.tau);
   h.state.push_back(p.state);
+  h.plastic_work.push_back(p.plastic_work);
 }
 
 }  // namespace

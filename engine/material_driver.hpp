@@ -20,6 +20,9 @@ struct DriverHistory {
   std::vector<Mat3<double>> F_E;  // the model's F after the return
   std::vector<Mat3<double>> tau;  // Kirchhoff stress
   std::vector<PlasticState<double>> state;
+  // The return mappings' plastic work per unit rest volume since the start, sum W(F_trial) -
+  // W(F_returned) (kernels/step/constitutive_update.hpp).
+  std::vector<double> plastic_work;
 };
 
 using DeformationPath = std::function<Mat3<double>(double t)>;

@@ -49,6 +49,7 @@
 #include "kernels/step/elastic_energy.hpp"
 #include "kernels/step/g2p_gather.hpp"
 #include "kernels/step/grid_update_slots.hpp"
+#include "kernels/step/load_work.hpp"
 #include "kernels/step/p2g_scatter.hpp"
 #include "kernels/transfer.hpp"
 
@@ -77,6 +78,18 @@ struct Diagnostics {
   double momentum[3] = {0, 0, 0};
   double max_speed = 0;
   double min_J = 0;
+};
+
+// The energy budget of a run (issue 19): the work done on the material since the budget was
+// enabled (kernels/grid_update.hpp, kernels/step/load_work.hpp), and the energy its plasticity took
+// out of the elastic store (kernels/step/constitutive_update.hpp), in J. With the kinetic and
+// elastic energy E(t) = K + W, the residual E(0) + gravity + colliders + loads - plastic - E(t) is
+// what the discretisation dissipated: the transfers' numerical dissipation and what the walls and
+// colliders take out of the motion they stop or rub (and, in a conveyor scene, the energy of the
+// particles it injects and removes).
+struct EnergyBudget {
+  double gravity = 0, colliders = 0, loads = 0;  // work on the material
+  double plastic = 0;                            // V0 (W(F_trial) - W(F_returned)), summed
 };
 
 // The vertical force of one collider summed per grid column (x, z) and integrated over time since
@@ -348,6 +361,10 @@ class Simulation {
   ColliderBody& collider(int c) { return colliders_[std::size_t(c)]; }
   const FootprintMap& footprint() const { return footprint_; }
   FootprintMap& footprint() { return footprint_; }
+  // Starts the energy budget (it costs an extra elastic energy per plastic return mapping and a few
+  // products per grid node); energy_budget() is zero until then.
+  void enable_energy_budget() { budget_enabled_ = true; }
+  const EnergyBudget& energy_budget() const { return budget_; }
   std::size_t particle_count() const { return storage_.size(); }
   std::size_t bytes_per_particle() const { return storage_.bytes_per_particle(); }
   double time() const { return time_; }
@@ -391,12 +408,15 @@ class Simulation {
     update_stress(dt);
     const GridGeometry<T> g = grid_.geometry();
     const ParticleView<T> pv = storage_.view();
+    if (budget_enabled_ && storage_.has(Attribute::body_accel))
+      budget_.loads += backend_.parallel_reduce("energy_budget.loads", pv.n, 0.0, LoadWork<T>{pv, dt}, Sum{});
     const SparseGridView<T> gv = grid_.view();
     const BinningView bins = binning_.view();
     backend_.scatter_blocks("p2g", binning_.colouring(), P2GScatter<T, ShapeT, kTransfer>{pv, gv, bins, g, dt});
     pose_colliders(dt);
     backend_.parallel_for("grid_update", grid_.active_count(), GridUpdateSlots<T, kTransfer>{grid_.slots(), &grid_params_});
     collect_reactions(double(dt));
+    if (budget_enabled_) collect_work();
     const std::vector<std::uint32_t>& blocks = binning_.particle_blocks();
     const GuardSummary<T> guard =
         backend_.gather_blocks("g2p", blocks.data(), blocks.size(),
@@ -436,9 +456,11 @@ class Simulation {
             using Model = std::decay_t<decltype(model)>;
             const ConstitutiveSummary r =
                 backend_.parallel_reduce(constitutive_launch_name<Model>(), m.range.end - m.range.begin,
-                                         ConstitutiveSummary{}, ConstitutiveUpdate<T, Model>{pv, model, m.range.begin},
+                                         ConstitutiveSummary{},
+                                         ConstitutiveUpdate<T, Model>{pv, model, m.range.begin, budget_enabled_},
                                          MergeConstitutive{});
             bad_stress = std::min(bad_stress, r.first_bad);
+            budget_.plastic += r.plastic_work;
             m.wave_speed = std::sqrt(r.max_modulus / m.info.density);
           },
           m.model);
@@ -474,6 +496,11 @@ class Simulation {
     const std::size_t slots = grid_.active_count();
     reactions_.assign(slots * colliders_.size() * kReactionComponents, T(0));
     up.reactions = reactions_.data();
+    up.work = nullptr;
+    if (budget_enabled_) {
+      work_.assign(slots * kWorkKinds, T(0));
+      up.work = work_.data();
+    }
     up.footprint_collider = footprint_collider_;
     up.footprint = nullptr;
     if (footprint_collider_ >= 0) {
@@ -503,6 +530,15 @@ class Simulation {
         }
     }
     footprint_.time += dt;
+  }
+
+  // Adds the per-block work of the last grid update to the budget, over blocks in slot order.
+  void collect_work() {
+    double w[kWorkKinds] = {0, 0};
+    for (std::size_t s = 0; s < grid_.active_count(); ++s)
+      for (int k = 0; k < kWorkKinds; ++k) w[k] += double(work_[s * kWorkKinds + std::size_t(k)]);
+    budget_.gravity += w[kGravityWork];
+    budget_.colliders += w[kColliderWork];
   }
 
   struct Load {
@@ -585,6 +621,9 @@ class Simulation {
   std::vector<T> reactions_;           // [slot][collider][6] of the last grid update
   int footprint_collider_ = -1;
   std::vector<T> footprint_blocks_;  // [slot][16]
+  bool budget_enabled_ = false;
+  EnergyBudget budget_;
+  std::vector<T> work_;  // [slot][kWorkKinds] of the last grid update
   FootprintMap footprint_;
   std::vector<Load> loads_;
   std::vector<int> staged_material_;  // material of each particle added since the last prepare()

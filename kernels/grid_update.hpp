@@ -6,6 +6,13 @@
 // collider: force xyz, then torque xyz about the collider's origin). When `footprint` is set, the
 // vertical force on collider `footprint_collider` is also summed per 4x4 column of the block
 // (x-major), the contact pressure map's raw material.
+// Work on the material (issue 19, the energy budget): when `work` is set, the block's sums go to
+// work[slot][kind]: the gravity kick's, 1/2 m (|v|^2 - |v - dt g|^2) = m dt g . (v - dt g / 2), and
+// the colliders', the impulse m (v_after - v_before) times the collider's velocity v_c at the node
+// (force times the velocity of the boundary it acts through). Both are linear in the node's
+// momentum, so nodes of tiny mass, whose velocities are large and meaningless, weigh nothing. The
+// domain walls do not move and do no work; the kinetic energy a wall or a collider takes out of
+// the motion it stops (relative to v_c) is dissipated, and the budget counts it in its residual.
 // Nodes with (almost) no mass get zero velocity: below `min_mass` the reciprocal 1/m could overflow
 // (a corner node reached only through three tiny B-spline weights has a denormal mass in float),
 // and a zero weight must never multiply a NaN in G2P.
@@ -37,7 +44,10 @@ struct GridUpdateParams {
   T* reactions;                           // [slot][collider][6], written when collider_count > 0
   int footprint_collider;                 // -1: no footprint
   T* footprint;                           // [slot][16]
+  T* work;                                // [slot][kWorkKinds], or null: no energy budget
 };
+
+enum WorkKind : int { kGravityWork, kColliderWork, kWorkKinds };
 
 constexpr int kReactionComponents = 6;
 
@@ -46,6 +56,7 @@ FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, co
   using Ch = GridChannels<kTransfer>;
   T reaction[kMaxColliders][kReactionComponents] = {};
   T column_force[kBlockSize * kBlockSize] = {};
+  T work[kWorkKinds] = {};
   for (int l = 0; l < kBlockNodes; ++l) {
     T* mass = data + Ch::kMass * kBlockNodes + l;
     T* vel[3] = {data + (Ch::kVelocity + 0) * kBlockNodes + l, data + (Ch::kVelocity + 1) * kBlockNodes + l,
@@ -59,6 +70,8 @@ FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, co
     const T inv_m = T(1) / *mass;
     T v[3];
     for (int d = 0; d < 3; ++d) v[d] = *vel[d] * inv_m + p.dt * p.gravity[d];
+    if (p.work)
+      for (int d = 0; d < 3; ++d) work[kGravityWork] += *mass * p.dt * p.gravity[d] * (v[d] - T(0.5) * p.dt * p.gravity[d]);
     if (kTransfer == Transfer::flip)
       for (int d = 0; d < 3; ++d) data[(Ch::kOldVelocity + d) * kBlockNodes + l] *= inv_m;
 
@@ -71,6 +84,11 @@ FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, co
         const Collider<T>& k = p.colliders[c];
         const T before[3] = {v[0], v[1], v[2]};
         if (!k.apply(v, x, skin)) continue;
+        if (p.work) {
+          T vc[3];
+          k.velocity_at(x, vc);
+          for (int d = 0; d < 3; ++d) work[kColliderWork] += *mass * (v[d] - before[d]) * vc[d];
+        }
         T f[3];  // on the collider: -m (v_after - v_before) / dt
         for (int d = 0; d < 3; ++d) f[d] = *mass * (before[d] - v[d]) / p.dt;
         const T r[3] = {x[0] - k.center[0], x[1] - k.center[1], x[2] - k.center[2]};
@@ -102,6 +120,8 @@ FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, co
       p.reactions[(slot * std::size_t(p.collider_count) + std::size_t(c)) * kReactionComponents + i] = reaction[c][i];
   if (p.footprint)
     for (int i = 0; i < kBlockSize * kBlockSize; ++i) p.footprint[slot * kBlockSize * kBlockSize + i] = column_force[i];
+  if (p.work)
+    for (int k = 0; k < kWorkKinds; ++k) p.work[slot * kWorkKinds + k] = work[k];
 }
 
 }  // namespace firn

@@ -1,6 +1,6 @@
 // A run's metrics.csv (DESIGN.md section 5) read back: the 12 standard columns
 // frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,
-// max_speed,min_J, then the scene's own metric columns, whatever they are named.
+// max_speed,min_J, then the energy budget and the scene's own metric columns, whatever they are named.
 #pragma once
 
 #include <cstddef>

@@ -54,6 +54,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
   if (scene.conveyor) conveyor.emplace(scene, *scene.conveyor);
   SceneMetrics<T, backend::OpenMP> scene_metrics(scene, built, conveyor ? &*conveyor : nullptr);
   scene_metrics.prepare(sim);
+  sim.enable_energy_budget();
   sim.prepare();
 
   RunSummary summary;
@@ -65,14 +66,22 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
   if (scene_metrics.writes_footprint()) make_directories(options.out_dir + "/footprint");
   write_file_atomically(options.out_dir + "/scene.resolved.toml", loaded.resolved_toml);
   std::string metrics =
-      "frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,max_speed,min_J" +
+      "frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,max_speed,min_J,"
+      "plastic_work,gravity_work,collider_work,load_work,energy_residual" +
       scene_metrics.header() + "\n";
+  double initial_energy = 0;  // kinetic + elastic at frame 0
   auto write_frame = [&](int frame) {
     const Diagnostics d = sim.diagnostics();
-    char row[512];
-    std::snprintf(row, sizeof row, "%d,%ld,%.9g,%.9g,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", frame, sim.steps(),
-                  sim.time(), sim.last_dt(), sim.particle_count(), d.kinetic_energy, d.elastic_energy, d.momentum[0],
-                  d.momentum[1], d.momentum[2], d.max_speed, d.min_J);
+    if (frame == 0) initial_energy = d.kinetic_energy + d.elastic_energy;
+    const EnergyBudget& b = sim.energy_budget();
+    const double residual =
+        initial_energy + b.gravity + b.colliders + b.loads - b.plastic - d.kinetic_energy - d.elastic_energy;
+    char row[768];
+    std::snprintf(row, sizeof row,
+                  "%d,%ld,%.9g,%.9g,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", frame,
+                  sim.steps(), sim.time(), sim.last_dt(), sim.particle_count(), d.kinetic_energy, d.elastic_energy,
+                  d.momentum[0], d.momentum[1], d.momentum[2], d.max_speed, d.min_J, b.plastic, b.gravity, b.colliders,
+                  b.loads, residual);
     metrics += row + scene_metrics.row(sim, options.out_dir + "/footprint/" + frame_name(frame)) + "\n";
     write_particles_vtp(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
     write_file_atomically(options.out_dir + "/metrics.csv", metrics);

@@ -2,7 +2,11 @@
 // parallel_reduce: the return mapping of a plastic model (projecting the previous G2P's trial F,
 // written back only when it changed), then the Kirchhoff stress tau into the particle's columns.
 // The summary names the first particle with a non-finite stress (where NaNs are born, before P2G
-// spreads them) and the largest P-wave modulus K + 4G/3 (which sets the next time step).
+// spreads them) and the largest P-wave modulus K + 4G/3 (which sets the next time step). With
+// `plastic_work` set it also sums the energy the return mapping takes out of the elastic store,
+// V0 (W(F_trial) - W(F_returned)) (issue 19, the energy budget): at a fixed total deformation this is
+// the work of the stress on the plastic strain increment, tau : d(eps_p), dissipated or, with
+// hardening, partly stored in the hardening variable.
 #pragma once
 
 #include <algorithm>
@@ -19,30 +23,46 @@ namespace firn {
 struct ConstitutiveSummary {
   std::size_t first_bad = kNoParticle;
   double max_modulus = 0;
+  double plastic_work = 0;  // J, when ConstitutiveUpdate::plastic_work is set
 };
 
 struct MergeConstitutive {
   FIRN_HD void operator()(ConstitutiveSummary& a, const ConstitutiveSummary& b) const {
     a.first_bad = std::min(a.first_bad, b.first_bad);
     a.max_modulus = std::max(a.max_modulus, b.max_modulus);
+    a.plastic_work += b.plastic_work;
   }
 };
+
+// The return mapping of a plastic model, here and in the material driver (engine/material_driver.cpp);
+// when `work` is not null, the elastic energy density it takes out, W(F_trial) - W(F_returned), is
+// added to *work. Returns whether F changed.
+template <class T, class Model>
+FIRN_HD bool project_measuring_work(const Model& model, Mat3<T>& F, PlasticState<T>& state, T* work) {
+  const T trial = work ? model.energy_density(F, state) : T(0);
+  if (!model.project(F, state)) return false;
+  if (work) *work += trial - model.energy_density(F, state);
+  return true;
+}
 
 template <class T, class Model>
 struct ConstitutiveUpdate {
   ParticleView<T> pv;
   Model model;
   std::size_t begin;
+  bool plastic_work = false;
 
   FIRN_HD void operator()(std::size_t i, ConstitutiveSummary& acc) const {
     const std::size_t p = begin + i;
     Mat3<T> F = particle_F(pv, p);
     PlasticState<T> state = particle_plastic_state(pv, p);
     if constexpr (Model::kPlastic) {
-      if (model.project(F, state)) {
+      T work = T(0);
+      if (project_measuring_work(model, F, state, plastic_work ? &work : nullptr)) {
         for (int q = 0; q < 9; ++q) pv.F[q][p] = F.m[q];
         if constexpr (Model::kUsesAlpha) pv.alpha[p] = state.alpha;
         if constexpr (Model::kUsesJp) pv.Jp[p] = state.Jp;
+        acc.plastic_work += double(pv.vol0[p]) * double(work);
       }
     }
     const Mat3<T> tau = model.kirchhoff(F, state);
