@@ -1,5 +1,5 @@
 // firn sweep SCENE --vary KEY=V1,V2[,...]... [--set KEY=VALUE]... [--out DIR] [--preview] [--jobs N]
-//                  [--at T1,T2,...]
+//                  [--at T1,T2,...] [--backend serial|openmp|cuda]
 // Runs every combination of the --vary values (their Cartesian product) as a child `firn run`, N at
 // a time, and writes DIR/sweep.csv (one row per finished run, rewritten after each) and gnuplot
 // PNG plots of the plotted scene metrics under DIR/plots/. Every combination is validated first:
@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
 #include "apps/sweep/child_process.hpp"
 #include "apps/sweep/combinations.hpp"
@@ -36,7 +37,7 @@ using namespace firn::sweep;
 using Clock = std::chrono::steady_clock;
 
 struct Options {
-  std::string scene, out, at;
+  std::string scene, out, at, backend = "openmp";
   std::vector<std::string> varies, sets;
   int jobs = 1;
   bool preview = false;
@@ -183,7 +184,7 @@ class Sweep {
     std::vector<std::string> overrides = o_.sets;
     for (const std::string& s : set_arguments(plan_.keys, plan_.combinations[index])) overrides.push_back(s);
     for (const std::string& s : overrides) child.argv.insert(child.argv.end(), {"--set", s});
-    child.argv.insert(child.argv.end(), {"--threads", std::to_string(threads_)});
+    child.argv.insert(child.argv.end(), {"--threads", std::to_string(threads_), "--backend", o_.backend});
     if (o_.preview) child.argv.push_back("--preview");
     child.log_path = dir + "/log.txt";
     running_[start_child(child)] = {index, Clock::now()};
@@ -259,9 +260,11 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("--jobs", o->jobs, "runs at a time, each on cores/jobs threads")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  add_backend_option(sweep, o->backend);
   sweep->add_option("--at", o->at,
                     "times for the C@T columns of sweep.csv, e.g. --at 0.1,0.2 or --at \"50 ms,100 ms\"");
   sweep->callback([o]() {
+    if (!usable_backend(o->backend)) return;
     Plan plan;
     try {
       plan = make_plan(*o);
