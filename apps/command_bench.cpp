@@ -1,7 +1,8 @@
-// firn bench step [--problem NAME] [--steps N] [--threads N] [--precision float|double]
-//                 [--transfer apic|pic|flip] [--domain-scale S] [--enable ATTR]... [--idle-materials N]
+// firn bench step [--problem NAME] [--steps N] [--threads N] [--backend serial|openmp|cuda]
+//                 [--precision float|double] [--transfer apic|pic|flip] [--domain-scale S]
+//                 [--enable ATTR]... [--idle-materials N]
 // Times the step loop alone (setup excluded) and prints particles, steps,
-// particle_steps_per_second and state_hash, plus threads, seconds and memory. --domain-scale,
+// particle_steps_per_second and state_hash, plus backend, threads, seconds and memory. --domain-scale,
 // --enable and --idle-materials add what the problem does not need (empty grid, attributes nobody
 // reads, materials without particles) to measure what skipping them saves (docs/performance.md).
 // firn bench surface [--particles N] [--threads N] [--repeats N]
@@ -13,15 +14,17 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "apps/backend_option.hpp"
+#include "apps/bench_step.hpp"
 #include "apps/commands.hpp"
 #include "apps/run_rendering.hpp"
 #include "engine/particle_storage.hpp"
-#include "engine/reference_problems.hpp"
 #include "kernels/backend/openmp.hpp"
 #include "viz/surface/mesh_topology.hpp"
 #include "viz/surface/reconstruct_surface.hpp"
@@ -30,54 +33,6 @@ namespace firn::app {
 namespace {
 
 int g_status = 0;
-
-struct BenchStepOptions {
-  std::string problem = "cube_drop";
-  int steps = 100;
-  int threads = 0;  // 0: all cores
-  std::string precision = "float";
-  std::string transfer = "apic";
-  double domain_scale = 1;
-  std::vector<std::string> enable;  // on_demand attributes to allocate although nothing reads them
-  int idle_materials = 0;           // extra materials with no particles
-};
-
-Transfer transfer_named(const std::string& name) {
-  return name == "pic" ? Transfer::pic : name == "flip" ? Transfer::flip : Transfer::apic;
-}
-
-Attribute attribute_named(const std::string& name) {
-#define FIRN_ATTRIBUTE_NAMED(attribute, n, kind, alloc, doc) \
-  if (name == #attribute) return Attribute::attribute;
-  FIRN_PARTICLE_ATTRIBUTES(FIRN_ATTRIBUTE_NAMED)
-#undef FIRN_ATTRIBUTE_NAMED
-  throw std::invalid_argument("unknown attribute " + name);
-}
-
-template <class T>
-void bench_step(const BenchStepOptions& o) {
-  backend::OpenMP omp;
-  if (o.threads > 0) omp.thread_count = o.threads;
-  SimulationConfig config = cube_drop_config(o.domain_scale);
-  config.transfer = transfer_named(o.transfer);
-  Simulation<T, backend::OpenMP> sim(config, omp);
-  add_cube_drop_particles(sim);
-  for (int m = 0; m < o.idle_materials; ++m)
-    sim.add_material({"idle" + std::to_string(m), "neo_hookean", 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
-  for (const std::string& name : o.enable) sim.enable(attribute_named(name));
-  sim.prepare();
-  const auto t0 = std::chrono::steady_clock::now();
-  for (int s = 0; s < o.steps; ++s) sim.step();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const double rate = double(sim.particle_count()) * o.steps / seconds;
-  std::printf("problem %s\nprecision %s\ntransfer %s\nthreads %d\nparticles %zu\nbytes_per_particle %zu\nsteps %d\n"
-              "seconds %.4f\n",
-              o.problem.c_str(), o.precision.c_str(), o.transfer.c_str(), omp.threads(), sim.particle_count(),
-              sim.bytes_per_particle(), o.steps, seconds);
-  std::printf("grid_blocks_active %zu\ngrid_memory_mb %.2f\n", sim.grid().active_count(),
-              sim.grid().memory_bytes() / 1048576.0);
-  std::printf("particle_steps_per_second %.0f\nstate_hash %016" PRIx64 "\n", rate, sim.state_hash());
-}
 
 struct BenchSurfaceOptions {
   long particles = 100000;
@@ -161,9 +116,15 @@ void add_bench_command(CLI::App& app) {
   step->add_option("--domain-scale", opts->domain_scale,
                    "scale the domain box (same particles) to show that cost follows the particles")
       ->check(CLI::Range(1.0, 16.0))->capture_default_str();
+  add_backend_option(step, opts->backend);
   step->callback([opts]() {
-    if (opts->precision == "float") bench_step<float>(*opts);
-    else bench_step<double>(*opts);
+    const std::optional<BackendKind> backend = usable_backend(opts->backend);
+    if (!backend) return;
+    if (*backend == BackendKind::serial) return bench_step_serial(*opts);
+    if (*backend == BackendKind::cuda) return bench_step_cuda(*opts);
+    backend::OpenMP omp;
+    if (opts->threads > 0) omp.thread_count = opts->threads;
+    bench_step_on(*opts, omp);
   });
 
   auto surface_opts = std::make_shared<BenchSurfaceOptions>();

@@ -1,4 +1,4 @@
-// firn run SCENE [--out DIR] [--set KEY=VALUE]... [--threads N] [--preview]
+// firn run SCENE [--out DIR] [--set KEY=VALUE]... [--threads N] [--backend serial|openmp|cuda] [--preview]
 //                [--render none|spheres|surface] [--video] [--mesh] [--gl egl|osmesa]
 // With --render spheres or surface, every output frame is also drawn to frames/NNNNN.png (and
 // video.mp4); surface draws the reconstructed snow surface (apps/frame_surface.hpp).
@@ -11,9 +11,11 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
 #include "apps/run_meshes.hpp"
 #include "apps/run_rendering.hpp"
@@ -61,7 +63,7 @@ class ProgressLine {
 
 void add_run_command(CLI::App& app) {
   struct Options {
-    std::string scene, out, render = "none", gl;
+    std::string scene, out, render = "none", gl, backend = "openmp";
     std::vector<std::string> sets;
     int threads = 0;
     bool preview = false, video = false, mesh = false;
@@ -72,6 +74,7 @@ void add_run_command(CLI::App& app) {
   run->add_option("--out", o->out, "output folder (default: out/<scene name>)");
   run->add_option("--set", o->sets, "override a scene key, e.g. --set simulation.dx=0.002 (repeatable)");
   run->add_option("--threads", o->threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  add_backend_option(run, o->backend);
   run->add_flag("--preview", o->preview, "coarser and faster: dx doubled, fewer particles per cell and frames");
   run->add_option("--render", o->render, "draw frames: none, spheres or surface")
       ->check(CLI::IsMember({"none", "spheres", "surface"}))->capture_default_str();
@@ -84,6 +87,8 @@ void add_run_command(CLI::App& app) {
       set_exit_status(2);
       return;
     }
+    const std::optional<BackendKind> backend = usable_backend(o->backend);
+    if (!backend) return;
     LoadedScene scene;
     try {
       scene = load_scene(scene_path(o->scene), SceneOptions{o->sets, o->preview});
@@ -94,6 +99,7 @@ void add_run_command(CLI::App& app) {
     }
     RunOptions options;
     options.out_dir = o->out.empty() ? "out/" + scene.spec.name : o->out;
+    options.backend = *backend;
     options.threads = o->threads;
     options.interrupt = &g_interrupted;
     RunRendering rendering;
@@ -150,9 +156,9 @@ void add_run_command(CLI::App& app) {
       set_exit_status(s.status == "interrupted" ? 130 : 1);
       return;
     }
-    std::printf("%s: ok, %zu particles, %ld steps, %.1f s (%.3g particle-steps/s on %d threads), outputs in %s\n",
+    std::printf("%s: ok, %zu particles, %ld steps, %.1f s (%.3g particle-steps/s on %s, %d threads), outputs in %s\n",
                 scene.spec.name.c_str(), s.particles, s.steps, s.wall_seconds, s.particle_steps_per_second(),
-                s.threads, options.out_dir.c_str());
+                s.backend.c_str(), s.threads, options.out_dir.c_str());
     if (rendering.finish)
       std::printf("frames in %s/frames%s (%s)\n", options.out_dir.c_str(), o->video ? ", video.mp4" : "",
                   rendering.description.c_str());

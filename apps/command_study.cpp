@@ -1,4 +1,4 @@
-// firn study accuracy|stability [--quick] [--out DIR] [--threads N]: the reports that turn "fast
+// firn study accuracy|stability [--quick] [--out DIR] [--threads N] [--backend B]: the reports that turn "fast
 // and accurate" into figures anyone can regenerate (DESIGN.md section 5).
 #include "apps/commands.hpp"
 

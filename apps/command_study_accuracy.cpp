@@ -1,4 +1,4 @@
-// firn study accuracy [--quick] [--out DIR] [--threads N] [--problems NAME...]
+// firn study accuracy [--quick] [--out DIR] [--threads N] [--backend B] [--problems NAME...]
 // Runs every known-answer problem at each of its resolution levels with every method (transfer
 // scheme x shape function x precision, at the problem's fixed CFL number) and writes to DIR
 // (default out/study/accuracy):
@@ -78,6 +78,7 @@ void run_accuracy_study(const AccuracyOptions& o) {
     return;
   }
   VerificationOptions options;
+  options.backend = backend_named(o.study.backend);
   options.threads = o.study.threads;
   const auto start = std::chrono::steady_clock::now();
   std::vector<AccuracyRow> rows;
@@ -119,7 +120,9 @@ void add_study_accuracy_command(CLI::App& study) {
   std::vector<std::string> names;
   for (const AccuracyProblem& p : accuracy_problems()) names.push_back(p.name);
   accuracy->add_option("--problems", o->problems, "problems to run (default: all)")->check(CLI::IsMember(names));
-  accuracy->callback([o]() { run_accuracy_study(*o); });
+  accuracy->callback([o]() {
+    if (usable_backend(o->study.backend)) run_accuracy_study(*o);
+  });
 }
 
 }  // namespace firn::app

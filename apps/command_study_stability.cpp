@@ -1,4 +1,4 @@
-// firn study stability [--quick] [--out DIR] [--threads N] [--seed S] [--random N] [--scenes DIR]
+// firn study stability [--quick] [--out DIR] [--threads N] [--backend B] [--seed S] [--random N] [--scenes DIR]
 // The numerical stability report of issue 8 (DESIGN.md section 6, problem 6):
 //   1. the largest CFL number that runs to the end, per thesis material (a ball thrown into a wall)
 //      and per thesis scene at --preview (bisection, stability_cfl.hpp);
@@ -63,6 +63,7 @@ class StabilityStudy {
  public:
   explicit StabilityStudy(const Options& o)
       : o_(o), quick_(o.study.quick), dir_(o.study.out), report_(o.study.out), start_(Clock::now()) {
+    probe_.backend = backend_named(o.study.backend);
     probe_.threads = o.study.threads;
   }
 
@@ -250,6 +251,7 @@ class StabilityStudy {
     s.seed = o_.seed;
     s.count = o_.random > 0 ? o_.random : quick_ ? 20 : 200;
     s.jobs = 2;
+    s.backend = o_.study.backend;
     std::filesystem::remove_all(s.dir);  // only this run's failures stay
     const auto t0 = Clock::now();
     int done = 0, failures = 0, finished = 0, guard = 0;
@@ -343,6 +345,7 @@ void add_study_stability_command(CLI::App& study) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--scenes", o->scenes, "folder of the thesis' scene files (default: found by name like firn run's)");
   cmd->callback([o]() {
+    if (!usable_backend(o->study.backend)) return;
     for (const char* f : {"snowball_wall", "snowball_pair", "snow_bar", "tire_on_snow"})
       try {
         if (!std::filesystem::is_regular_file(thesis_scene(*o, f)))

@@ -1,5 +1,6 @@
 // firn sweep SCENE --vary KEY=V1,V2[,...]... [--set KEY=VALUE]... [--out DIR] [--preview] [--jobs N]
-//                  [--at T1,T2,...] [--plot C1,C2,...] [--scheduler local|slurm] [--sbatch OPTION]...
+//                  [--at T1,T2,...] [--backend serial|openmp|cuda] [--plot C1,C2,...]
+//                  [--scheduler local|slurm] [--sbatch OPTION]...
 // firn sweep --collect DIR [--plot C1,C2,...]
 // Runs every combination of the --vary values (their Cartesian product) as a child `firn run`, N at
 // a time, and writes DIR/sweep.csv (one row per finished run, rewritten after each) and gnuplot
@@ -27,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
 #include "apps/sweep/child_process.hpp"
 #include "apps/sweep/combinations.hpp"
@@ -46,7 +48,7 @@ using namespace firn::sweep;
 using Clock = std::chrono::steady_clock;
 
 struct Options {
-  std::string scene, out, at, plot, scheduler = "local", collect;
+  std::string scene, out, at, plot, backend = "openmp", scheduler = "local", collect;
   std::vector<std::string> varies, sets, sbatch;
   int jobs = 1;
   bool preview = false;
@@ -136,6 +138,7 @@ std::vector<std::string> run_command(const Options& o, const Plan& plan, std::si
   for (const std::string& s : set_arguments(plan.keys, plan.combinations[index])) overrides.push_back(s);
   for (const std::string& s : overrides) argv.insert(argv.end(), {"--set", s});
   if (o.preview) argv.push_back("--preview");
+  argv.insert(argv.end(), {"--backend", o.backend});
   return argv;
 }
 
@@ -389,6 +392,7 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("--jobs", o->jobs, "runs at a time, each on cores/jobs threads")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  add_backend_option(sweep, o->backend);
   sweep->add_option("--at", o->at,
                     "times for the C@T columns of sweep.csv, e.g. --at 0.1,0.2 or --at \"50 ms,100 ms\"");
   sweep->add_option("--plot", o->plot,
@@ -430,6 +434,7 @@ void add_sweep_command(CLI::App& app) {
       }
       return;
     }
+    if (!usable_backend(o->backend)) return;
     Plan plan;
     try {
       plan = make_plan(*o);

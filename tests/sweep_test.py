@@ -48,10 +48,14 @@ def test_product():
     header, rows = rows[0], rows[1:]
     keys = ["bodies.0.velocity", "simulation.transfer"]
     check(header[:7] == keys + RUN_COLUMNS, f"sweep.csv header {header}")
-    # Whatever scene metrics two_spheres reports come as mean_C then C@T per --at time.
+    # Each metric after min_J (the energy budget; two_spheres has no scene metrics of its own) comes as
+    # mean_C, then C@T for the two --at times.
     extra = header[7:]
-    check(len(extra) % 4 == 0 and all(extra[i].startswith("mean_") for i in range(0, len(extra), 4)),
-          f"scene-metric columns {extra}")
+    groups = [extra[i:i + 3] for i in range(0, len(extra), 3)]
+    check(len(extra) > 0 and all(g == [g[0], g[0][5:] + "@0.05", g[0][5:] + "@0.1"] and g[0].startswith("mean_")
+                                 for g in groups), f"scene-metric columns {extra}")
+    check([g[0] for g in groups] == ["mean_plastic_work", "mean_gravity_work", "mean_collider_work", "mean_load_work",
+                                     "mean_energy_residual"], f"scene-metric columns {extra}")
     expected = [["[0.1,0.1,0]", "pic"], ["[0.1,0.1,0]", "apic"], ["[0.2, 0.2, 0]", "pic"], ["[0.2, 0.2, 0]", "apic"]]
     check([row[:2] for row in rows] == expected, f"rows not in product order: {rows}")
     check(all(len(row) == len(header) for row in rows), "rows and header differ in length")

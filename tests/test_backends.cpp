@@ -6,40 +6,21 @@
 
 #include <cstdint>
 #include <tuple>
-#include <vector>
 
 #include "engine/simulation.hpp"
 #include "kernels/backend/openmp.hpp"
 #include "kernels/backend/serial.hpp"
+#include "tests/two_bodies.hpp"
 
 namespace firn {
-namespace {
 
-struct Outcome {
-  std::uint64_t hash;
-  std::vector<float> positions;  // by particle id
-};
-
-template <class Backend>
-Outcome run_two_bodies(Backend backend, Transfer transfer, Shape shape) {
-  SimulationConfig c;
-  c.dx = 0.02;
-  c.transfer = transfer;
-  c.shape = shape;
-  c.cfl = 0.5;
-  Simulation<float, Backend> sim(c, backend);
-  const double h = c.dx / 2, vol = h * h * h;
-  const int jelly = sim.add_material({"jelly", "neo_hookean", 1000, ElasticModuli::from_E_nu(2e4, 0.3)});
-  const int ball = sim.add_material({"ball", "fixed_corotated", 500, ElasticModuli::from_E_nu(5e4, 0.25)});
-  sim.add_particles(jelly, fill_box(c.domain_min, c.dx, 2, {0.3, 0.08, 0.3}, {0.7, 0.3, 0.7}), {0, -0.5, 0}, vol);
-  sim.add_particles(ball, fill_sphere(c.domain_min, c.dx, 2, {0.5, 0.5, 0.5}, 0.12), {0.5, -3, 0.2}, vol);
-  for (int s = 0; s < 25; ++s) sim.step();
-  const ParticleView<float> pv = sim.particles();
-  Outcome out{sim.state_hash(), std::vector<float>(3 * pv.n)};
-  for (std::size_t p = 0; p < pv.n; ++p)
-    for (int d = 0; d < 3; ++d) out.positions[3 * pv.id[p] + d] = pv.x[d][p];
-  return out;
+TwoBodiesOutcome openmp_two_bodies(Transfer transfer, Shape shape) {
+  backend::OpenMP two;
+  two.thread_count = 2;
+  return run_two_bodies(two, transfer, shape);
 }
+
+namespace {
 
 class BackendsAgree : public ::testing::TestWithParam<std::tuple<Transfer, Shape>> {};
 
@@ -48,9 +29,9 @@ TEST_P(BackendsAgree, BitwiseForAnyThreadCount) {
   backend::OpenMP one, two;
   one.thread_count = 1;
   two.thread_count = 2;
-  const Outcome a = run_two_bodies(one, transfer, shape), b = run_two_bodies(two, transfer, shape);
+  const TwoBodiesOutcome a = run_two_bodies(one, transfer, shape), b = run_two_bodies(two, transfer, shape);
   EXPECT_EQ(a.hash, b.hash);
-  const Outcome serial = run_two_bodies(backend::Serial{}, transfer, shape);
+  const TwoBodiesOutcome serial = run_two_bodies(backend::Serial{}, transfer, shape);
   ASSERT_EQ(serial.positions.size(), a.positions.size());
   for (std::size_t i = 0; i < a.positions.size(); ++i)
     ASSERT_NEAR(serial.positions[i], a.positions[i], 1e-5f) << "coordinate " << i;  // 1e-3 of a cell

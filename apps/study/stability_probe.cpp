@@ -5,11 +5,12 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include "apps/study/stability_checkerboard.hpp"
+#include "engine/backend_dispatch.hpp"
 #include "engine/conveyor.hpp"
 #include "engine/scene/scene_builder.hpp"
-#include "kernels/backend/openmp.hpp"
 
 namespace firn::study {
 
@@ -37,11 +38,11 @@ bool closed_system(const SceneSpec& s) {
   return true;
 }
 
-template <class T>
+template <class T, class Backend>
 class Probe {
  public:
-  Probe(const SceneSpec& scene, const ProbeSettings& settings)
-      : scene_(scene), settings_(settings), sim_(scene.config, openmp(settings.threads)) {
+  Probe(const SceneSpec& scene, const ProbeSettings& settings, const Backend& backend)
+      : scene_(scene), settings_(settings), sim_(scene.config, backend) {
     build_scene(scene, sim_);
     if (scene.conveyor) conveyor_.emplace(scene, *scene.conveyor);
     sim_.prepare();
@@ -103,12 +104,6 @@ class Probe {
   }
 
  private:
-  static backend::OpenMP openmp(int threads) {
-    backend::OpenMP omp;
-    if (threads > 0) omp.thread_count = threads;
-    return omp;
-  }
-
   double height(const ParticleView<T>& pv, std::size_t p) const {
     return up_[0] * double(pv.x[0][p]) + up_[1] * double(pv.x[1][p]) + up_[2] * double(pv.x[2][p]);
   }
@@ -169,7 +164,7 @@ class Probe {
 
   const SceneSpec& scene_;
   const ProbeSettings& settings_;
-  Simulation<T, backend::OpenMP> sim_;
+  Simulation<T, Backend> sim_;
   std::optional<Conveyor> conveyor_;
   double lowest_[3] = {0, 0, 0}, up_[3] = {0, 1, 0};
   std::vector<char> in_top_;  // by particle id
@@ -178,8 +173,11 @@ class Probe {
 }  // namespace
 
 ProbeResult probe_scene(const SceneSpec& scene, const ProbeSettings& settings) {
-  if (scene.precision == "double") return Probe<double>(scene, settings).run();
-  return Probe<float>(scene, settings).run();
+  return with_backend(settings.backend, settings.threads, [&](const auto& backend) {
+    using Backend = std::decay_t<decltype(backend)>;
+    if (scene.precision == "double") return Probe<double, Backend>(scene, settings, backend).run();
+    return Probe<float, Backend>(scene, settings, backend).run();
+  });
 }
 
 }  // namespace firn::study

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/backend_kind.hpp"
 #include "engine/scene/scene.hpp"
 
 namespace firn::study {
@@ -39,8 +40,9 @@ struct ProbeSample {
 };
 
 struct ProbeSettings {
-  int threads = 0;               // OpenMP threads (0: all cores)
-  long sample_every = 10;        // steps between energy samples (and the last step)
+  BackendKind backend = BackendKind::openmp;  // available here (backend_unavailable)
+  int threads = 0;                            // OpenMP threads (0: all cores)
+  long sample_every = 10;                     // steps between energy samples (and the last step)
   long max_steps = 0;            // when > 0, stop after this many steps (the end time still bounds it)
   double blow_up_growth = 0.01;  // see the energy test above
   bool track_top = false;

@@ -78,7 +78,8 @@ void run_random_scenes(const RandomRunSettings& s, const std::function<void(cons
       Running r{next, Clock::now(), random_scene(s.seed, next)};
       write_file_atomically(dir + "/scene.toml", r.scene.toml);
       sweep::ChildSpec child;
-      child.argv = {s.firn, "run", dir + "/scene.toml", "--out", dir + "/out", "--threads", "1"};
+      child.argv = {s.firn,  "run", dir + "/scene.toml", "--out", dir + "/out", "--threads", "1",
+                    "--backend", s.backend};
       child.log_path = dir + "/log.txt";
       children.running[sweep::start_child(child)] = r;
       ++next;

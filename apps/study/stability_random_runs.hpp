@@ -33,6 +33,7 @@ struct RandomRunSettings {
   std::uint64_t seed = 1;
   int count = 200;
   int jobs = 2;
+  std::string backend = "openmp";  // each run's --backend
 };
 
 // Runs scenes 0 .. count-1 and reports each as it ends (in the order they end).

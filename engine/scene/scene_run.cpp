@@ -1,139 +1,20 @@
 #include "engine/scene/scene_run.hpp"
 
-#include <chrono>
-#include <cinttypes>
-#include <cmath>
-#include <cstdio>
-#include <optional>
-#include <type_traits>
-
-#include "engine/output/atomic_file.hpp"
-#include "engine/output/vtp_writer.hpp"
-#include "engine/scene/scene_builder.hpp"
-#include "engine/scene/scene_metrics.hpp"
+#include "engine/scene/scene_run_backends.hpp"
+#include "engine/scene/scene_run_impl.hpp"
 #include "kernels/backend/openmp.hpp"
 
 namespace firn {
-namespace {
-
-std::string frame_name(int frame) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%05d", frame);
-  return buf;
-}
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-template <class T, class Backend>
-FrameDescription describe_frame(const Simulation<T, Backend>& sim, const ParticleView<T>& view, int frame,
-                                const std::vector<Collider<double>>& colliders) {
-  FrameDescription f;
-  f.frame = frame;
-  f.time = sim.time();
-  if constexpr (std::is_same_v<T, float>) f.particles_float = &view;
-  else f.particles_double = &view;
-  for (int m = 0; m < int(sim.material_count()); ++m) {
-    const ParticleRange r = sim.material_range(m);
-    f.materials.push_back({r.begin, r.end, m});
-  }
-  f.colliders = &colliders;
-  return f;
-}
-
-template <class T>
-RunSummary run(const LoadedScene& loaded, const RunOptions& options) {
-  const auto wall0 = Clock::now();
-  const SceneSpec& scene = loaded.spec;
-  backend::OpenMP omp;
-  if (options.threads > 0) omp.thread_count = options.threads;
-  Simulation<T, backend::OpenMP> sim(scene.config, omp);
-  if (options.rest_positions) sim.enable(Attribute::x0);
-  const BuiltScene built = build_scene(scene, sim);
-  std::optional<Conveyor> conveyor;
-  if (scene.conveyor) conveyor.emplace(scene, *scene.conveyor);
-  SceneMetrics<T, backend::OpenMP> scene_metrics(scene, built, conveyor ? &*conveyor : nullptr);
-  scene_metrics.prepare(sim);
-  sim.enable_energy_budget();
-  sim.prepare();
-
-  RunSummary summary;
-  summary.particles = sim.particle_count();
-  summary.threads = omp.threads();
-  summary.precision = scene.precision;
-
-  make_directories(options.out_dir + "/particles");
-  if (scene_metrics.writes_footprint()) make_directories(options.out_dir + "/footprint");
-  write_file_atomically(options.out_dir + "/scene.resolved.toml", loaded.resolved_toml);
-  std::string metrics =
-      "frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,max_speed,min_J,"
-      "plastic_work,gravity_work,collider_work,load_work,energy_residual" +
-      scene_metrics.header() + "\n";
-  double initial_energy = 0;  // kinetic + elastic at frame 0
-  auto write_frame = [&](int frame) {
-    const Diagnostics d = sim.diagnostics();
-    if (frame == 0) initial_energy = d.kinetic_energy + d.elastic_energy;
-    const EnergyBudget& b = sim.energy_budget();
-    const double residual =
-        initial_energy + b.gravity + b.colliders + b.loads - b.plastic - d.kinetic_energy - d.elastic_energy;
-    char row[768];
-    std::snprintf(row, sizeof row,
-                  "%d,%ld,%.9g,%.9g,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", frame,
-                  sim.steps(), sim.time(), sim.last_dt(), sim.particle_count(), d.kinetic_energy, d.elastic_energy,
-                  d.momentum[0], d.momentum[1], d.momentum[2], d.max_speed, d.min_J, b.plastic, b.gravity, b.colliders,
-                  b.loads, residual);
-    metrics += row + scene_metrics.row(sim, options.out_dir + "/footprint/" + frame_name(frame)) + "\n";
-    write_particles_vtp(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
-    write_file_atomically(options.out_dir + "/metrics.csv", metrics);
-    if (options.on_frame) {
-      const ParticleView<T> view = sim.particles();
-      std::vector<Collider<double>> colliders;  // where they are now
-      for (std::size_t c = 0; c < sim.collider_count(); ++c) colliders.push_back(sim.collider(int(c)).collider);
-      options.on_frame(describe_frame(sim, view, frame, colliders));
-    }
-  };
-
-  const int frames = std::max(1, int(std::ceil(scene.end_time / scene.frame_interval - 1e-9)));
-  double step_seconds = 0;
-  try {
-    write_frame(0);
-    for (int f = 1; f <= frames; ++f) {
-      const double target = std::min(scene.end_time, f * scene.frame_interval);
-      while (sim.time() < target * (1 - 1e-12)) {
-        if (options.interrupt && options.interrupt->load()) throw std::runtime_error("interrupted");
-        const auto t0 = Clock::now();
-        if (conveyor) conveyor->update(sim, sim.time());
-        sim.step(std::min(sim.next_dt(), target - sim.time()));
-        step_seconds += seconds_since(t0);
-        summary.particle_steps += double(sim.particle_count());
-        if (options.progress) options.progress({sim.time(), scene.end_time, sim.steps(), f, frames, step_seconds});
-      }
-      write_frame(f);
-    }
-  } catch (const StabilityError& e) {
-    summary.status = "unstable";
-    summary.error = e.what();
-  } catch (const std::exception& e) {
-    const bool interrupted = options.interrupt && options.interrupt->load();
-    summary.status = interrupted ? "interrupted" : "failed";
-    summary.error = interrupted ? "interrupted by a signal at t = " + std::to_string(sim.time()) + " s" : e.what();
-  }
-  summary.steps = sim.steps();
-  summary.simulated_time = sim.time();
-  summary.step_seconds = step_seconds;
-  char hash[20];
-  std::snprintf(hash, sizeof hash, "%016" PRIx64, sim.state_hash());
-  summary.state_hash = hash;
-  summary.peak_memory_mb = peak_memory_mb();
-  summary.wall_seconds = seconds_since(wall0);
-  write_file_atomically(options.out_dir + "/summary.json", summary.to_json());
-  return summary;
-}
-
-}  // namespace
 
 RunSummary run_scene(const LoadedScene& scene, const RunOptions& options) {
-  return scene.spec.precision == "double" ? run<double>(scene, options) : run<float>(scene, options);
+  switch (options.backend) {
+    case BackendKind::serial: return run_scene_serial(scene, options);
+    case BackendKind::cuda: return run_scene_cuda(scene, options);
+    case BackendKind::openmp: break;
+  }
+  backend::OpenMP omp;
+  if (options.threads > 0) omp.thread_count = options.threads;
+  return scene_run_detail::run_on(scene, options, omp);
 }
 
 }  // namespace firn

@@ -9,6 +9,7 @@
 #include <functional>
 #include <string>
 
+#include "engine/backend_kind.hpp"
 #include "engine/output/run_summary.hpp"
 #include "engine/scene/frame_description.hpp"
 #include "engine/scene/scene_reader.hpp"
@@ -24,7 +25,8 @@ struct RunProgress {
 
 struct RunOptions {
   std::string out_dir;
-  int threads = 0;                                  // 0: all cores
+  BackendKind backend = BackendKind::openmp;        // available here (backend_unavailable)
+  int threads = 0;                                  // OpenMP threads, 0: all cores
   const std::atomic<bool>* interrupt = nullptr;     // set from a signal handler to stop between steps
   std::function<void(const RunProgress&)> progress;  // called after every step
   // Called at every output frame after its files are written (e.g. the renderer); an exception

@@ -3,8 +3,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "engine/backend_dispatch.hpp"
 #include "engine/simulation.hpp"
-#include "kernels/backend/openmp.hpp"
 
 namespace firn {
 
@@ -36,8 +36,8 @@ void planar_motion(const ParticleView<T>& pv, double& velocity_x, double& omega_
   omega_z = angular / inertia;
 }
 
-template <class T>
-InclineHistory run_incline_in(const InclineRun& run, const VerificationOptions& options) {
+template <class T, class Backend>
+InclineHistory run_incline_in(const InclineRun& run, const VerificationOptions& options, const Backend& backend) {
   const double dx = run.dx, h = dx / run.per_cell;
   SimulationConfig c;
   c.domain_min = {-3 * dx, -3 * dx, -2 * dx};
@@ -50,9 +50,7 @@ InclineHistory run_incline_in(const InclineRun& run, const VerificationOptions& 
   c.shape = run.method.shape;
   for (auto& wall : c.walls) wall = {WallType::none, 0, 0};
   c.walls[4] = c.walls[5] = {WallType::slip, 3, 0};  // nodes z = -2dx..0 and dx..3dx: all of them
-  backend::OpenMP omp;
-  if (options.threads > 0) omp.thread_count = options.threads;
-  Simulation<T, backend::OpenMP> sim(c, omp);
+  Simulation<T, Backend> sim(c, backend);
   const int body = sim.add_material(run.material);
   sim.add_particles(body,
                     fill_lattice(c.domain_min, dx, run.per_cell, {0, 0, 0}, {run.body_max[0], run.body_max[1], dx},
@@ -94,7 +92,11 @@ InclineHistory run_incline_in(const InclineRun& run, const VerificationOptions& 
 }  // namespace
 
 InclineHistory run_incline(const InclineRun& run, const VerificationOptions& options) {
-  return with_precision(run.method, [&](auto scalar) { return run_incline_in<decltype(scalar)>(run, options); });
+  return with_precision(run.method, [&](auto scalar) {
+    return with_backend(options.backend, options.threads, [&](const auto& backend) {
+      return run_incline_in<decltype(scalar)>(run, options, backend);
+    });
+  });
 }
 
 }  // namespace firn

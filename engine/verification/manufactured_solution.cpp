@@ -16,9 +16,9 @@
 #include <chrono>
 #include <cmath>
 
+#include "engine/backend_dispatch.hpp"
 #include "engine/simulation.hpp"
 #include "engine/verification/verification.hpp"
-#include "kernels/backend/openmp.hpp"
 
 namespace firn {
 namespace {
@@ -45,8 +45,9 @@ struct Manufactured {
   }
 };
 
-template <class T>
-VerificationCase run_manufactured(int level, const VerificationMethod& method, const VerificationOptions& options) {
+template <class T, class Backend>
+VerificationCase run_manufactured(int level, const VerificationMethod& method, const VerificationOptions& options,
+                                  const Backend& backend) {
   const Manufactured ms;
   const double end_time = 1 / ms.c;  // half a period of sin(c pi t)
   const int cells = 8 << level, per_cell = 2 + level;
@@ -62,9 +63,7 @@ VerificationCase run_manufactured(int level, const VerificationMethod& method, c
   c.shape = method.shape;
   c.walls[0] = c.walls[1] = {WallType::sticky, 3, 0};  // nodes at X <= 0 and X >= 1
   for (int f = 2; f < 6; ++f) c.walls[f] = {WallType::slip, 4, 0};  // nodes within dx of a lateral face
-  backend::OpenMP omp;
-  if (options.threads > 0) omp.thread_count = options.threads;
-  Simulation<T, backend::OpenMP> sim(c, omp);
+  Simulation<T, Backend> sim(c, backend);
   const int m = sim.add_material({"solid", "neo_hookean", ms.rho0, ms.moduli});
   sim.add_particles(m, fill_box(c.domain_min, dx, per_cell, {0, 0, 0}, {1, width, width}), {0, 0, 0}, h * h * h);
   sim.enable(Attribute::x0);
@@ -97,7 +96,11 @@ VerificationCase run_manufactured(int level, const VerificationMethod& method, c
 
 VerificationCase manufactured_solution_case(int level, const VerificationMethod& method,
                                             const VerificationOptions& options) {
-  return with_precision(method, [&](auto scalar) { return run_manufactured<decltype(scalar)>(level, method, options); });
+  return with_precision(method, [&](auto scalar) {
+    return with_backend(options.backend, options.threads, [&](const auto& backend) {
+      return run_manufactured<decltype(scalar)>(level, method, options, backend);
+    });
+  });
 }
 
 std::vector<VerificationRow> verify_manufactured_solution(const VerificationOptions& options) {

@@ -11,9 +11,9 @@
 #include <cmath>
 #include <ostream>
 
+#include "engine/backend_dispatch.hpp"
 #include "engine/simulation.hpp"
 #include "engine/verification/verification.hpp"
-#include "kernels/backend/openmp.hpp"
 
 namespace firn {
 namespace {
@@ -21,9 +21,9 @@ namespace {
 constexpr double kRadius = 0.2, kSpeed = 0.1, kEndTime = 4.0;
 constexpr int kPerCell = 2;
 
-template <class T>
+template <class T, class Backend>
 TwoSpheresCase run_spheres(int level, const VerificationMethod& method, const VerificationOptions& options,
-                           const EnergyHistory& history) {
+                           const EnergyHistory& history, const Backend& backend) {
   const double dx = 1.0 / (16 << level), s = kSpeed / std::sqrt(3.0), h = dx / kPerCell;
   SimulationConfig c;
   c.domain_min = {0, 0, 0};
@@ -34,9 +34,7 @@ TwoSpheresCase run_spheres(int level, const VerificationMethod& method, const Ve
   c.shape = method.shape;
   c.cfl = 0.4;
   c.dt_max = 0.05;
-  backend::OpenMP omp;
-  if (options.threads > 0) omp.thread_count = options.threads;
-  Simulation<T, backend::OpenMP> sim(c, omp);
+  Simulation<T, Backend> sim(c, backend);
   const int m = sim.add_material({"sphere", "neo_hookean", 1000, ElasticModuli::from_E_nu(1000, 0.3)});
   sim.add_particles(m, fill_sphere(c.domain_min, dx, kPerCell, {0.3, 0.3, 0.3}, kRadius), {s, s, s}, h * h * h);
   sim.add_particles(m, fill_sphere(c.domain_min, dx, kPerCell, {0.7, 0.7, 0.7}, kRadius), {-s, -s, -s}, h * h * h);
@@ -68,8 +66,11 @@ TwoSpheresCase run_spheres(int level, const VerificationMethod& method, const Ve
 
 TwoSpheresCase two_spheres_case(int level, const VerificationMethod& method, const VerificationOptions& options,
                                 const EnergyHistory& history) {
-  return with_precision(method,
-                        [&](auto scalar) { return run_spheres<decltype(scalar)>(level, method, options, history); });
+  return with_precision(method, [&](auto scalar) {
+    return with_backend(options.backend, options.threads, [&](const auto& backend) {
+      return run_spheres<decltype(scalar)>(level, method, options, history, backend);
+    });
+  });
 }
 
 std::vector<VerificationRow> verify_two_spheres(const VerificationOptions& options) {

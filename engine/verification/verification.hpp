@@ -1,7 +1,7 @@
 // Known-answer problems (DESIGN.md section 6), shared by `firn verify` and the test suite. Each
-// problem runs at one or more levels and reports an error against its stated bound, on the OpenMP
-// backend with the default method (method.hpp). The *_case functions run one level with any method,
-// for `firn study accuracy`.
+// problem runs at one or more levels and reports an error against its stated bound, on the chosen
+// backend (OpenMP by default) with the default method (method.hpp). The *_case functions run one
+// level with any method, for `firn study accuracy`.
 #pragma once
 
 #include <cstddef>
@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/backend_kind.hpp"
 #include "engine/verification/method.hpp"
 
 namespace firn {
@@ -28,8 +29,9 @@ struct VerificationRow {
 };
 
 struct VerificationOptions {
-  int threads = 0;             // 0: all cores
-  std::ostream* log = nullptr;  // histories (energy per transfer scheme, ...) go here
+  BackendKind backend = BackendKind::openmp;  // available here (backend_unavailable)
+  int threads = 0;                            // OpenMP threads, 0: all cores
+  std::ostream* log = nullptr;                // histories (energy per transfer scheme, ...) go here
 };
 
 // One run of a problem at one resolution level. `error` is the quantity the problem's comment

@@ -13,9 +13,9 @@
 #include <chrono>
 #include <cmath>
 
+#include "engine/backend_dispatch.hpp"
 #include "engine/simulation.hpp"
 #include "engine/verification/verification.hpp"
-#include "kernels/backend/openmp.hpp"
 
 namespace firn {
 namespace {
@@ -24,8 +24,9 @@ constexpr double kL = 25, kE = 100, kRho = 1, kV0 = 0.1;
 constexpr double kFinestBound = 0.01;  // 1% of the amplitude at level 2
 constexpr int kPerCell = 2;
 
-template <class T>
-VerificationCase run_bar(int level, const VerificationMethod& method, const VerificationOptions& options) {
+template <class T, class Backend>
+VerificationCase run_bar(int level, const VerificationMethod& method, const VerificationOptions& options,
+                         const Backend& backend) {
   const double beta = M_PI / (2 * kL), w = beta * std::sqrt(kE / kRho), amplitude = kV0 / w, period = 2 * M_PI / w;
   const double dx = kL / (50 << level);
   SimulationConfig c;
@@ -39,9 +40,7 @@ VerificationCase run_bar(int level, const VerificationMethod& method, const Veri
   c.shape = method.shape;
   for (auto& wall : c.walls) wall = {WallType::none, 0, 0};
   c.walls[0] = {WallType::sticky, 3, 0};  // nodes at x <= 0 hold the fixed end
-  backend::OpenMP omp;
-  if (options.threads > 0) omp.thread_count = options.threads;
-  Simulation<T, backend::OpenMP> sim(c, omp);
+  Simulation<T, Backend> sim(c, backend);
   const int bar = sim.add_material({"bar", "fixed_corotated", kRho, ElasticModuli::from_E_nu(kE, 0)});
   const double h = dx / kPerCell;
   sim.add_particles(bar, fill_box(c.domain_min, dx, kPerCell, {0, 0, 0}, {kL, dx, dx}), {0, 0, 0}, h * h * h);
@@ -69,7 +68,11 @@ VerificationCase run_bar(int level, const VerificationMethod& method, const Veri
 }  // namespace
 
 VerificationCase vibrating_bar_case(int level, const VerificationMethod& method, const VerificationOptions& options) {
-  return with_precision(method, [&](auto scalar) { return run_bar<decltype(scalar)>(level, method, options); });
+  return with_precision(method, [&](auto scalar) {
+    return with_backend(options.backend, options.threads, [&](const auto& backend) {
+      return run_bar<decltype(scalar)>(level, method, options, backend);
+    });
+  });
 }
 
 std::vector<VerificationRow> verify_vibrating_bar(const VerificationOptions& options) {

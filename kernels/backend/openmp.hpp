@@ -55,8 +55,8 @@ struct OpenMP {
   template <class F>
   void scatter_blocks(const char* name, const BlockColouring& colouring, F&& f) const {
     ScopedLaunch timer(profile, name);
-    const bool parallel = static_cast<long>(colouring.begin[BlockColouring::kColours]) >= kMinParallelBlocks;
-#pragma omp parallel num_threads(thread_count) if (parallel)
+#pragma omp parallel num_threads(thread_count) \
+    if (static_cast<long>(colouring.begin[BlockColouring::kColours]) >= kMinParallelBlocks)
     for (int c = 0; c < BlockColouring::kColours; ++c) {
       const long begin = static_cast<long>(colouring.begin[c]), end = static_cast<long>(colouring.begin[c + 1]);
       // The implicit barrier at the end of each loop separates the colours.

@@ -1,0 +1,305 @@
+// The CUDA backend: the API of backend::Serial and backend::OpenMP (parallel_for, parallel_reduce,
+// the block scatter and the block gather) launching the same FIRN_HD functors as CUDA kernels.
+// Compiled by nvcc only (FIRN_CUDA builds, .cu translation units).
+//
+// Determinism: every result is the same bits on every run.
+//   parallel_reduce: items are split into a number of thread blocks that depends only on n, each
+//     thread folds a fixed strided subset, and the partials are combined in a fixed binary tree
+//     (shared memory), then the blocks' partials by the same tree in a second launch.
+//   scatter_blocks (P2G): one thread block per grid block, colour after colour as on the CPU (same
+//     colour blocks never share a node, so the flush into the grid needs no atomics). The block's
+//     scratch lives in shared memory. Threads take the block's particles in rounds of kThreads;
+//     each stages its particle's contributions in shared memory, then each thread owns scratch
+//     nodes and adds the round's staged contributions to them in particle order. So every node
+//     receives the same additions in the same order as the CPU scatter (the scratch then the
+//     flush), with no atomics: the price is that a node thread tests every particle of the round
+//     (kThreads x nodes tests per round), against one float atomicAdd per contribution (27 or 64
+//     per particle) whose order, and so whose rounding, changes from run to run.
+//   gather_blocks (G2P): one thread block per grid block loads the window into shared memory,
+//     threads take the particles, and the per-block results are reduced by the fixed tree.
+// Every launch synchronises before it returns: until particle storage and the grid live in device
+// memory (issue 14, item 3), kernels read and write host memory directly, which needs a device with
+// pageable memory access (HMM; see cuda_unavailable_reason), and the host reads what they wrote.
+// With a LaunchProfile, each launch's device time is measured with CUDA events.
+#pragma once
+
+#if !defined(__CUDACC__)
+#error "kernels/backend/cuda.hpp is compiled by nvcc only"
+#endif
+
+#include <cuda_runtime.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "kernels/backend/block_colouring.hpp"
+#include "kernels/backend/launch_profile.hpp"
+#include "kernels/backend/schedule.hpp"
+#include "kernels/block_window.hpp"
+#include "kernels/hd.hpp"
+
+namespace firn::backend {
+namespace cuda_detail {
+
+inline void check(cudaError_t e, const char* what) {
+  if (e != cudaSuccess) throw std::runtime_error(std::string("CUDA ") + what + ": " + cudaGetErrorString(e));
+}
+
+constexpr int kThreads = 256;          // per thread block of parallel_for, reductions and the gather
+constexpr int kMaxReduceBlocks = 1024;  // the second reduction pass folds at most this many partials
+constexpr std::size_t kSharedBytes = 40 * 1024;  // below the 48 KB a block may use without opting in
+
+template <class F>
+__global__ void for_each(std::size_t n, F f) {
+  const std::size_t i = std::size_t(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (i < n) f(i);
+}
+
+// Combines the blockDim.x (a power of two) values of `shared` into shared[0] by a fixed tree.
+template <class R, class Combine>
+__device__ void tree_reduce(R* shared, const Combine& combine) {
+  __syncthreads();
+  for (unsigned w = blockDim.x / 2; w > 0; w >>= 1) {
+    if (threadIdx.x < w) combine(shared[threadIdx.x], shared[threadIdx.x + w]);
+    __syncthreads();
+  }
+}
+
+// Thread block k folds items [k per_block, (k + 1) per_block) into partial[k].
+template <class R, class F, class Combine>
+__global__ void reduce_items(std::size_t n, std::size_t per_block, R init, F f, Combine combine, R* partial) {
+  extern __shared__ __align__(16) unsigned char shared_bytes[];
+  R* shared = reinterpret_cast<R*>(shared_bytes);
+  R acc = init;
+  const std::size_t begin = std::size_t(blockIdx.x) * per_block, end = begin + per_block < n ? begin + per_block : n;
+  for (std::size_t i = begin + threadIdx.x; i < end; i += blockDim.x) f(i, acc);
+  shared[threadIdx.x] = acc;
+  tree_reduce(shared, combine);
+  if (threadIdx.x == 0) partial[blockIdx.x] = shared[0];
+}
+
+// The term of the second pass: folds the first pass's partials.
+template <class R, class Combine>
+struct FoldPartials {
+  const R* partial;
+  Combine combine;
+  FIRN_HD void operator()(std::size_t i, R& acc) const { combine(acc, partial[i]); }
+};
+
+// The scatter target of one particle in a round: its contributions in stencil order.
+template <class T, int kSupport, int kChannels>
+struct StagedParticle {
+  int base[3];
+  int count;
+  T values[kSupport * kSupport * kSupport * kChannels];
+
+  FIRN_HD void add(int i, int j, int k, const T* v) {
+    if (count == 0) {
+      base[0] = i;
+      base[1] = j;
+      base[2] = k;
+    }
+    for (int c = 0; c < kChannels; ++c) values[count * kChannels + c] = v[c];
+    ++count;
+  }
+  // The contribution to global node g, or null when g is outside the stencil.
+  FIRN_HD const T* at(const int g[3]) const {
+    int o[3];
+    for (int d = 0; d < 3; ++d) {
+      o[d] = g[d] - base[d];
+      if (o[d] < 0 || o[d] >= kSupport) return nullptr;
+    }
+    return values + ((o[0] * kSupport + o[1]) * kSupport + o[2]) * kChannels;
+  }
+};
+
+template <class S>
+using StagedOf = StagedParticle<typename S::Value, S::kSupport, S::kChannels>;
+
+// Particles staged per round: as many as fit beside the scratch, at most 64.
+template <class S>
+constexpr int scatter_threads() {
+  const std::size_t room = (kSharedBytes - sizeof(typename S::Scratch)) / sizeof(StagedOf<S>);
+  return room >= 64 ? 64 : room >= 1 ? int(room) : 1;
+}
+
+// One thread block per grid block of one colour (see the top of this file).
+template <class S>
+__global__ void scatter_colour(const std::uint32_t* blocks, S scatter) {
+  using Scratch = typename S::Scratch;
+  constexpr int kRound = scatter_threads<S>();
+  __shared__ Scratch scratch;
+  __shared__ StagedOf<S> staged[kRound];
+  const std::uint32_t b = blocks[blockIdx.x];
+  if (threadIdx.x == 0) {
+    int block[3];
+    scatter.grid.block_coords(b, block);
+    scratch.set_origin(block);
+  }
+  for (int i = threadIdx.x; i < Scratch::kNodes * S::kChannels; i += blockDim.x) scratch.values[i] = 0;
+  __syncthreads();
+  for (std::size_t m = 0; m < scatter.bins.material_count; ++m) {
+    const std::uint32_t end = scatter.bins.bucket_end(m, b);
+    for (std::uint32_t round = scatter.bins.bucket_begin(m, b); round < end; round += kRound) {
+      const int count = end - round < std::uint32_t(kRound) ? int(end - round) : kRound;
+      if (int(threadIdx.x) < count) {
+        staged[threadIdx.x].count = 0;
+        scatter.particle(round + threadIdx.x, staged[threadIdx.x]);
+      }
+      __syncthreads();
+      for (int n = threadIdx.x; n < Scratch::kNodes; n += blockDim.x) {
+        int g[3];
+        window_node<S::kSpan>(scratch.origin, n, g);
+        auto* node = scratch.values + n * S::kChannels;
+        for (int q = 0; q < count; ++q)
+          if (const auto* v = staged[q].at(g))
+            for (int c = 0; c < S::kChannels; ++c) node[c] += v[c];
+      }
+      __syncthreads();
+    }
+  }
+  for (int n = threadIdx.x; n < Scratch::kNodes; n += blockDim.x) scratch.flush_node(scatter.grid, n);
+}
+
+// One thread block per grid block: the window in shared memory, the particles over the threads,
+// then the block's results by the fixed tree into out[blockIdx.x].
+template <class G, class Combine>
+__global__ void gather_block(const std::uint32_t* blocks, G gather, Combine combine, typename G::Result* out) {
+  using Window = typename G::Window;
+  using R = typename G::Result;
+  __shared__ Window window;
+  __shared__ __align__(16) unsigned char shared_bytes[kThreads * sizeof(R)];
+  R* shared = reinterpret_cast<R*>(shared_bytes);
+  const std::uint32_t b = blocks[blockIdx.x];
+  if (threadIdx.x == 0) {
+    int block[3];
+    gather.grid.block_coords(b, block);
+    window.set_origin(block);
+  }
+  __syncthreads();
+  for (int n = threadIdx.x; n < Window::kNodes; n += blockDim.x) window.load_node(gather.grid, G::kFirstChannel, n);
+  __syncthreads();
+  R acc{};
+  for (std::size_t m = 0; m < gather.bins.material_count; ++m)
+    for (std::uint32_t s = gather.bins.bucket_begin(m, b) + threadIdx.x, e = gather.bins.bucket_end(m, b); s < e;
+         s += blockDim.x)
+      gather.particle(s, window, acc);
+  shared[threadIdx.x] = acc;
+  tree_reduce(shared, combine);
+  if (threadIdx.x == 0) out[blockIdx.x] = shared[0];
+}
+
+template <class T>
+T* device_buffer(std::size_t n) {
+  void* p = nullptr;
+  check(cudaMalloc(&p, n * sizeof(T)), "cudaMalloc");
+  return static_cast<T*>(p);
+}
+
+inline unsigned grid_size(std::size_t n, int threads) { return unsigned((n + std::size_t(threads) - 1) / std::size_t(threads)); }
+
+}  // namespace cuda_detail
+
+struct Cuda {
+  static constexpr const char* kName = "cuda";
+  LaunchProfile* profile = nullptr;
+
+  // The binning's counting sort splits the particles into threads() parts counted one per thread;
+  // until it runs on the device (issue 14, item 3) one part keeps its table small.
+  int threads() const { return 1; }
+
+  template <class F>
+  void parallel_for(const char* name, std::size_t n, const F& f, Schedule = Schedule::uniform) const {
+    launch(name, [&] {
+      if (n) cuda_detail::for_each<<<cuda_detail::grid_size(n, cuda_detail::kThreads), cuda_detail::kThreads>>>(n, f);
+    });
+  }
+
+  // f(i, acc) accumulates item i into acc; combine(acc, partial) merges; init is combine's identity.
+  template <class R, class F, class Combine>
+  R parallel_reduce(const char* name, std::size_t n, R init, const F& f, const Combine& combine) const {
+    R result = init;
+    launch(name, [&] { result = reduce(n, init, f, combine); });
+    return result;
+  }
+
+  // The P2G scatter strategy over a kernels/step/p2g_scatter.hpp functor (see the top of this file).
+  template <class S>
+  void scatter_blocks(const char* name, const BlockColouring& colouring, const S& scatter) const {
+    launch(name, [&] {
+      for (int c = 0; c < BlockColouring::kColours; ++c) {
+        const std::size_t count = colouring.begin[c + 1] - colouring.begin[c];
+        if (count)
+          cuda_detail::scatter_colour<S>
+              <<<unsigned(count), cuda_detail::scatter_threads<S>()>>>(colouring.blocks + colouring.begin[c], scatter);
+      }
+    });
+  }
+
+  // The G2P gather strategy over a kernels/step/g2p_gather.hpp functor: its per-block results
+  // combined into G::Result{} (combine's identity).
+  template <class G, class Combine>
+  typename G::Result gather_blocks(const char* name, const std::uint32_t* blocks, std::size_t count, const G& gather,
+                                   const Combine& combine) const {
+    using R = typename G::Result;
+    R result{};
+    launch(name, [&] {
+      if (count == 0) return;
+      R* partial = cuda_detail::device_buffer<R>(count);
+      cuda_detail::gather_block<<<unsigned(count), cuda_detail::kThreads>>>(blocks, gather, combine, partial);
+      cuda_detail::check(cudaGetLastError(), name);
+      result = reduce(count, R{}, cuda_detail::FoldPartials<R, Combine>{partial, combine}, combine);
+      cuda_detail::check(cudaFree(partial), "cudaFree");
+    });
+    return result;
+  }
+
+ private:
+  // Runs `launches` (kernel launches on the default stream), checks them, waits for them and adds
+  // their device time to the profile.
+  template <class Launches>
+  void launch(const char* name, const Launches& launches) const {
+    cudaEvent_t start = nullptr, stop = nullptr;
+    if (profile) {
+      cuda_detail::check(cudaEventCreate(&start), name);
+      cuda_detail::check(cudaEventCreate(&stop), name);
+      cuda_detail::check(cudaEventRecord(start), name);
+    }
+    launches();
+    cuda_detail::check(cudaGetLastError(), name);
+    if (profile) {
+      cuda_detail::check(cudaEventRecord(stop), name);
+      cuda_detail::check(cudaEventSynchronize(stop), name);
+      float ms = 0;
+      cuda_detail::check(cudaEventElapsedTime(&ms, start, stop), name);
+      profile->add(name, 1e-3 * double(ms));
+      cudaEventDestroy(start);
+      cudaEventDestroy(stop);
+    }
+    cuda_detail::check(cudaDeviceSynchronize(), name);
+  }
+
+  // The two-pass fixed-tree reduction (see the top of this file).
+  template <class R, class F, class Combine>
+  static R reduce(std::size_t n, R init, const F& f, const Combine& combine) {
+    using cuda_detail::kThreads;
+    if (n == 0) return init;
+    const std::size_t blocks = std::min<std::size_t>(cuda_detail::kMaxReduceBlocks, cuda_detail::grid_size(n, kThreads));
+    const std::size_t per_block = (n + blocks - 1) / blocks;
+    R* partial = cuda_detail::device_buffer<R>(blocks + 1);
+    const std::size_t shared = kThreads * sizeof(R);
+    cuda_detail::reduce_items<<<unsigned(blocks), kThreads, shared>>>(n, per_block, init, f, combine, partial);
+    cuda_detail::reduce_items<<<1, kThreads, shared>>>(blocks, blocks, init,
+                                                       cuda_detail::FoldPartials<R, Combine>{partial, combine}, combine,
+                                                       partial + blocks);
+    R result = init;
+    cuda_detail::check(cudaMemcpy(&result, partial + blocks, sizeof(R), cudaMemcpyDeviceToHost), "reduce");
+    cuda_detail::check(cudaFree(partial), "cudaFree");
+    return result;
+  }
+};
+
+}  // namespace firn::backend
