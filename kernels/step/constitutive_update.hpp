@@ -4,9 +4,10 @@
 // The summary names the first particle with a non-finite stress (where NaNs are born, before P2G
 // spreads them) and the largest P-wave modulus K + 4G/3 (which sets the next time step). With
 // `plastic_work` set it also sums the energy the return mapping takes out of the elastic store,
-// V0 (W(F_trial) - W(F_returned)) (issue 19, the energy budget): at a fixed total deformation this is
-// the work of the stress on the plastic strain increment, tau : d(eps_p), dissipated or, with
-// hardening, partly stored in the hardening variable.
+// V0 (W(F_trial) - W(F_returned)) (issue 19, the energy budget): to first order in the step's
+// increment, the work of the stress on the plastic strain increment, tau : d(eps_p) (dissipated or,
+// with hardening, partly stored in the hardening variable); for J2 it exceeds it by about
+// G d(gamma)^2 per step (README.md, "the energy budget").
 #pragma once
 
 #include <algorithm>
