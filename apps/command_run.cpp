@@ -1,10 +1,14 @@
 // firn run SCENE [--out DIR] [--set KEY=VALUE]... [--threads N] [--backend serial|openmp|cuda] [--preview]
-//                [--render none|spheres|surface] [--video] [--mesh] [--gl egl|osmesa]
+//                [--render none|spheres|surface] [--video] [--mesh] [--gl egl|osmesa] [--checkpoint-every TIME]
+// firn run --resume DIR [--threads N] [--backend ...] [--render ...] [--video] [--mesh] [--gl ...]
+//                [--checkpoint-every TIME]
 // With --render spheres or surface, every output frame is also drawn to frames/NNNNN.png (and
 // video.mp4); surface draws the reconstructed snow surface (apps/frame_surface.hpp).
 // Validates the scene (any fault: one line on standard error, exit status 2, nothing written),
 // runs it with progress on a terminal, and writes the outputs of DESIGN.md section 5.
-// Exit status: 0 completed, 1 unstable or failed, 2 bad scene or options, 130 interrupted.
+// An interrupt writes DIR/checkpoint.firn, and so does --checkpoint-every at the frames it names;
+// --resume continues such a run (engine/scene/checkpoint.hpp) to the end it would have reached.
+// Exit status: 0 completed, 1 unstable or failed, 2 bad scene, options or checkpoint, 130 interrupted.
 #include <unistd.h>
 
 #include <atomic>
@@ -19,7 +23,10 @@
 #include "apps/commands.hpp"
 #include "apps/run_meshes.hpp"
 #include "apps/run_rendering.hpp"
+#include "engine/output/atomic_file.hpp"
+#include "engine/scene/checkpoint.hpp"
 #include "engine/scene/scene_run.hpp"
+#include "engine/units.hpp"
 
 namespace firn::app {
 namespace {
@@ -59,19 +66,34 @@ class ProgressLine {
   bool drawn_ = false;
 };
 
+// A run whose summary.json says it finished.
+bool finished_run(const std::string& out_dir) {
+  try {
+    return read_text_file(out_dir + "/summary.json").find("\"status\": \"ok\"") != std::string::npos;
+  } catch (const std::runtime_error&) {
+    return false;
+  }
+}
+
+bool file_exists(const std::string& path) { return access(path.c_str(), F_OK) == 0; }
+
 }  // namespace
 
 void add_run_command(CLI::App& app) {
   struct Options {
-    std::string scene, out, render = "none", gl, backend = "openmp";
+    std::string scene, out, render = "none", gl, backend = "openmp", resume, checkpoint_every;
     std::vector<std::string> sets;
     int threads = 0;
     bool preview = false, video = false, mesh = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App* run = app.add_subcommand("run", "run a scene and write its outputs");
-  run->add_option("scene", o->scene, "scene file (TOML) or the name of a shipped scene (firn help scenes)")->required();
+  run->add_option("scene", o->scene, "scene file (TOML) or the name of a shipped scene (firn help scenes)");
   run->add_option("--out", o->out, "output folder (default: out/<scene name>)");
+  run->add_option("--resume", o->resume, "continue the run in this output folder from its checkpoint");
+  run->add_option("--checkpoint-every", o->checkpoint_every,
+                  "write DIR/checkpoint.firn at the first frame after every multiple of this simulated time, "
+                  "e.g. 50ms (an interrupt always writes one)");
   run->add_option("--set", o->sets, "override a scene key, e.g. --set simulation.dx=0.002 (repeatable)");
   run->add_option("--threads", o->threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
   add_backend_option(run, o->backend);
@@ -82,23 +104,44 @@ void add_run_command(CLI::App& app) {
   run->add_flag("--mesh", o->mesh, "write reconstructed surfaces to meshes/NNNNN.ply");
   run->add_option("--gl", o->gl, "OpenGL context: egl or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
   run->callback([o]() {
-    if (o->video && o->render == "none") {
-      std::fprintf(stderr, "firn run: --video needs --render spheres or surface\n");
+    auto refuse = [](const std::string& why) {
+      std::fprintf(stderr, "firn run: %s\n", why.c_str());
       set_exit_status(2);
-      return;
+    };
+    if (o->video && o->render == "none") return refuse("--video needs --render spheres or surface");
+    const bool resume = !o->resume.empty();
+    if (resume == !o->scene.empty()) return refuse("give a scene, or --resume DIR");
+    if (resume && (!o->out.empty() || !o->sets.empty() || o->preview))
+      return refuse("--resume continues the run as it was set up: no --out, --set or --preview");
+    if (resume && o->video)
+      return refuse("a resumed run draws only its remaining frames; make the whole video afterwards with "
+                    "firn render " + o->resume + " --video");
+    RunOptions options;
+    if (!o->checkpoint_every.empty()) {
+      try {
+        options.checkpoint_every = parse_quantity(o->checkpoint_every, Quantity::time);
+      } catch (const std::invalid_argument& e) {
+        return refuse("--checkpoint-every: " + std::string(e.what()));
+      }
+      if (!(options.checkpoint_every > 0)) return refuse("--checkpoint-every must be a positive time");
     }
     const std::optional<BackendKind> backend = usable_backend(o->backend);
     if (!backend) return;
+    if (resume && finished_run(o->resume)) {
+      std::printf("%s: the run already finished (summary.json), nothing to resume\n", o->resume.c_str());
+      return;
+    }
     LoadedScene scene;
     try {
-      scene = load_scene(scene_path(o->scene), SceneOptions{o->sets, o->preview});
+      scene = resume ? load_scene(o->resume + "/scene.resolved.toml", SceneOptions{})
+                     : load_scene(scene_path(o->scene), SceneOptions{o->sets, o->preview});
     } catch (const SceneError& e) {
       std::fprintf(stderr, "%s\n", e.what());
       set_exit_status(2);
       return;
     }
-    RunOptions options;
-    options.out_dir = o->out.empty() ? "out/" + scene.spec.name : o->out;
+    options.out_dir = resume ? o->resume : o->out.empty() ? "out/" + scene.spec.name : o->out;
+    options.resume = resume;
     options.backend = *backend;
     options.threads = o->threads;
     options.interrupt = &g_interrupted;
@@ -134,6 +177,8 @@ void add_run_command(CLI::App& app) {
       std::fprintf(stderr, "%s\n", e.what());
       set_exit_status(2);
       return;
+    } catch (const CheckpointError& e) {
+      return refuse(std::string("cannot resume: ") + e.what());
     } catch (const std::exception& e) {
       progress.finish();
       std::fprintf(stderr, "firn run: %s\n", e.what());
@@ -153,6 +198,8 @@ void add_run_command(CLI::App& app) {
     if (s.status != "ok") {
       std::fprintf(stderr, "firn run: %s: %s (outputs so far in %s)\n", s.status.c_str(), s.error.c_str(),
                    options.out_dir.c_str());
+      if (file_exists(checkpoint_path(options.out_dir)))
+        std::fprintf(stderr, "firn run: continue with: firn run --resume %s\n", options.out_dir.c_str());
       set_exit_status(s.status == "interrupted" ? 130 : 1);
       return;
     }

@@ -9,6 +9,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/run_rendering.hpp"
+#include "engine/version.hpp"
 
 namespace {
 
@@ -29,7 +30,7 @@ int main(int argc, char** argv) {
   prefer_passive_openmp_waiting(argv);
   CLI::App app{"firn: a Material Point Method engine for snow, rubber tires and rigid bodies"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "firn 0.1.0");
+  app.set_version_flag("--version", std::string("firn ") + firn::firn_version());
   firn::app::add_bench_command(app);
   firn::app::add_verify_command(app);
   firn::app::add_run_command(app);

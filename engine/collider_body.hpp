@@ -12,6 +12,7 @@
 
 #include <cmath>
 
+#include "engine/state_stream.hpp"
 #include "kernels/colliders.hpp"
 #include "kernels/mat3.hpp"
 
@@ -63,6 +64,25 @@ struct ColliderBody {
       angular_impulse[d] += t[d] * dt;
     }
     impulse_time += dt;
+  }
+
+  // What moves and accumulates (pose, velocities, reactions), for checkpoints; the shape, its
+  // motion type, mass and load come from the scene.
+  void save_motion(StateWriter& out) const { motion_fields(out, *this); }
+  void load_motion(StateReader& in) { motion_fields(in, *this); }
+
+ private:
+  template <class Stream, class Body>
+  static void motion_fields(Stream& s, Body& b) {
+    s.field(b.collider.center);
+    s.field(b.collider.rotation);
+    s.field(b.collider.velocity);
+    s.field(b.collider.angular_velocity);
+    s.field(b.force);
+    s.field(b.torque);
+    s.field(b.impulse);
+    s.field(b.angular_impulse);
+    s.field(b.impulse_time);
   }
 };
 

@@ -14,6 +14,7 @@
 #include "engine/particle_fill.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/simulation.hpp"
+#include "engine/state_stream.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/particle_attributes.hpp"
 
@@ -65,11 +66,22 @@ class Conveyor {
     injected_ += long(now.size());
   }
 
+  // The columns injected so far and the counts, for checkpoints.
+  void save_state(StateWriter& out) const { state_fields(out, *this); }
+  void load_state(StateReader& in) { state_fields(in, *this); }
+
   long injected() const { return injected_; }
   long removed() const { return removed_; }
   const ConveyorSpec& spec() const { return spec_; }
 
  private:
+  template <class Stream, class Self>
+  static void state_fields(Stream& s, Self& c) {
+    s.field(c.next_column_);
+    s.field(c.injected_);
+    s.field(c.removed_);
+  }
+
   // The bed's lattice sites with x_from <= x < x_to at t = 0.
   std::vector<Point> columns(double x_from, double x_to) const {
     return fill_box(origin_, dx_, per_axis_, {x_from, spec_.ground, spec_.z_min},

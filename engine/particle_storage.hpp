@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "engine/aligned_vector.hpp"
+#include "engine/state_stream.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/particle_attributes.hpp"
 
@@ -76,6 +77,34 @@ class ParticleStorage {
     if (!col.empty()) gather_column(col, order, count, backend);
     FIRN_PARTICLE_ATTRIBUTES(FIRN_GATHER)
 #undef FIRN_GATHER
+    size_ = count;
+  }
+
+  // Every attribute by name with its enabled flag, and the columns of the enabled ones, for a
+  // checkpoint; load() takes them back (the same attribute list and precision) and refuses others.
+  void save(StateWriter& out) const {
+    out.value(std::uint64_t(size_));
+#define FIRN_SAVE_COLUMNS(name, n, kind, alloc, doc)                                 \
+  out.text(#name);                                                                   \
+  out.value(std::uint8_t(has(Attribute::name)));                                     \
+  if (has(Attribute::name))                                                          \
+    for (const auto& col : name##_) out.array(col);
+    FIRN_PARTICLE_ATTRIBUTES(FIRN_SAVE_COLUMNS)
+#undef FIRN_SAVE_COLUMNS
+  }
+  void load(StateReader& in) {
+    const std::size_t count = std::size_t(in.value<std::uint64_t>());
+#define FIRN_LOAD_COLUMNS(name, n, kind, alloc, doc)                                               \
+  StateReader::expect(in.text() == #name, "checkpoint's particle attributes differ from this firn's"); \
+  enabled_[int(Attribute::name)] = in.value<std::uint8_t>() != 0;                                  \
+  for (auto& col : name##_) {                                                                      \
+    col.clear();                                                                                   \
+    if (has(Attribute::name)) in.array(col);                                                       \
+    StateReader::expect(col.size() == (has(Attribute::name) ? count : 0),                          \
+                        "checkpoint's particle column " #name " has the wrong length");            \
+  }
+    FIRN_PARTICLE_ATTRIBUTES(FIRN_LOAD_COLUMNS)
+#undef FIRN_LOAD_COLUMNS
     size_ = count;
   }
 

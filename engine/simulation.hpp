@@ -32,6 +32,7 @@
 #include "engine/particle_fields.hpp"
 #include "engine/particle_fill.hpp"
 #include "engine/particle_storage.hpp"
+#include "engine/state_stream.hpp"
 #include "engine/sparse_grid.hpp"
 #include "engine/stability_guard.hpp"
 #include "kernels/binning_view.hpp"
@@ -239,6 +240,8 @@ class Simulation {
       for (std::size_t p = 0; p < pv.n; ++p) pv.Jp[p] = T(1);
   }
 
+  bool has(Attribute a) const { return storage_.has(a); }
+
   // Groups particles by material (stable) and measures the initial speed for the time step. Called by
   // the first step; call it yourself to read particles in their final layout before stepping.
   void prepare() {
@@ -355,6 +358,44 @@ class Simulation {
     return h;
   }
 
+  // The state a step depends on, for checkpoints (engine/scene/checkpoint.hpp): time and step
+  // count, the particles in their memory order (sums over particles follow it, so it is part of
+  // the state for bitwise equality), the materials' ranges and wave speeds, the colliders' poses,
+  // velocities and reactions, the loads' ramps, the footprint and the energy budget. What the
+  // scene defines (material parameters, collider shapes, load regions) is not saved: load_state()
+  // restores into a simulation built from the same scene, and refuses one that differs in
+  // precision, materials, colliders, loads or footprint.
+  void save_state(StateWriter& out) {
+    prepare();
+    out.value(std::uint32_t(sizeof(T)));
+    out.value(std::uint64_t(materials_.size()));
+    out.value(std::uint64_t(colliders_.size()));
+    out.value(std::uint64_t(loads_.size()));
+    out.value(std::uint64_t(footprint_.impulse.size()));
+    state_fields(out, *this);
+    for (const ColliderBody& c : colliders_) c.save_motion(out);
+    storage_.save(out);
+  }
+
+  void load_state(StateReader& in) {
+    prepare();  // the scene's own particles grouped, so that they are replaced whole
+    using R = StateReader;
+    R::expect(in.value<std::uint32_t>() == sizeof(T), "checkpoint's precision differs from the scene's");
+    R::expect(in.value<std::uint64_t>() == materials_.size(), "checkpoint's materials differ from the scene's");
+    R::expect(in.value<std::uint64_t>() == colliders_.size(), "checkpoint's colliders differ from the scene's");
+    R::expect(in.value<std::uint64_t>() == loads_.size(), "checkpoint's loads differ from the scene's");
+    R::expect(in.value<std::uint64_t>() == footprint_.impulse.size(), "checkpoint's footprint differs from the scene's");
+    state_fields(in, *this);
+    for (ColliderBody& c : colliders_) c.load_motion(in);
+    storage_.load(in);
+    std::size_t end = 0;
+    for (const Material& m : materials_) {
+      R::expect(m.range.begin == end && m.range.end >= m.range.begin, "checkpoint's material ranges are inconsistent");
+      end = m.range.end;
+    }
+    R::expect(end == storage_.size(), "checkpoint's material ranges do not cover its particles");
+  }
+
   ParticleView<T> particles() { return storage_.view(); }
   std::size_t collider_count() const { return colliders_.size(); }
   const ColliderBody& collider(int c) const { return colliders_[std::size_t(c)]; }
@@ -394,6 +435,30 @@ class Simulation {
     ParticleRange range;
     double wave_speed;  // max over its particles of sqrt(p_wave_modulus / density), last stress pass
   };
+
+  // The scalar state of save_state and load_state, once for both directions (the counts of
+  // materials, loads and footprint columns are checked before).
+  template <class Stream, class Sim>
+  static void state_fields(Stream& s, Sim& sim) {
+    s.field(sim.time_);
+    s.field(sim.last_dt_);
+    s.field(sim.steps_);
+    s.field(sim.next_id_);
+    s.field(sim.max_speed_);
+    s.field(sim.min_node_mass_);
+    for (auto& m : sim.materials_) {
+      s.field(m.range);
+      s.field(m.wave_speed);
+    }
+    s.field(sim.loads_assigned_);
+    for (auto& l : sim.loads_) {
+      s.field(l.accel);
+      s.field(l.factor);
+    }
+    for (auto& f : sim.footprint_.impulse) s.field(f);
+    s.field(sim.footprint_.time);
+    s.field(sim.budget_);
+  }
 
   std::vector<ParticleRange> ranges() const {
     std::vector<ParticleRange> r;

@@ -33,10 +33,18 @@ struct RunOptions {
   // from it ends the run as "failed".
   std::function<void(const FrameDescription&)> on_frame;
   bool rest_positions = false;  // keep x0, the rest positions (surface reconstruction anchors to them)
+  // Checkpoints (engine/scene/checkpoint.hpp) to OUT_DIR/checkpoint.firn: at the first output frame
+  // at or after every multiple of this many simulated seconds (0: none), and then also at a
+  // stability-guard stop or a failure (the last frame's state, kept in memory). An interrupt
+  // always writes one, of the state between the two steps where it stopped.
+  double checkpoint_every = 0;
+  // Continue the run in out_dir from its checkpoint: the scene must be the one the run wrote
+  // (scene.resolved.toml); metrics.csv is cut back to the checkpoint's rows and grows from there.
+  bool resume = false;
 };
 
-// Builds the scene (throws SceneError before anything is written if a body has no particles),
-// then runs it. The summary's status says how it ended; its state_hash is that of the final state.
+// Builds the scene (throws SceneError before anything is written if a body has no particles, and
+// CheckpointError if a checkpoint to resume is missing or not this run's), then runs it. The summary's status says how it ended; its state_hash is that of the final state.
 RunSummary run_scene(const LoadedScene& scene, const RunOptions& options);
 
 }  // namespace firn

@@ -12,6 +12,7 @@
 
 #include "engine/output/atomic_file.hpp"
 #include "engine/output/vtp_writer.hpp"
+#include "engine/scene/checkpoint.hpp"
 #include "engine/scene/scene_builder.hpp"
 #include "engine/scene/scene_metrics.hpp"
 #include "engine/scene/scene_run.hpp"
@@ -64,29 +65,48 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
   summary.backend = Backend::kName;
   summary.precision = scene.precision;
 
+  // A checkpoint belongs to the scene text the run wrote first: re-reading that text resolves the
+  // same simulation, though not always to the same text.
+  const std::string resolved_toml =
+      options.resume ? read_text_file(options.out_dir + "/scene.resolved.toml") : loaded.resolved_toml;
+  RunCheckpoint progress;  // where the run stands at its last output frame (or where it resumed)
+  if (options.resume) {
+    const std::string path = checkpoint_path(options.out_dir);
+    progress = read_checkpoint(path, resolved_toml);
+    StateReader in(progress.engine_state);
+    sim.load_state(in);
+    if (conveyor) conveyor->load_state(in);
+    StateReader::expect(in.at_end(), path + ": checkpoint's conveyor differs from the scene's");
+    StateReader::expect(!options.rest_positions || sim.has(Attribute::x0),
+                        path + ": the run kept no rest positions, which --render surface and --mesh need; "
+                               "resume without them");
+    summary.particle_steps = progress.particle_steps;
+  } else {
+    progress.metrics =
+        "frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,max_speed,min_J,"
+        "plastic_work,gravity_work,collider_work,load_work,energy_residual" +
+        scene_metrics.header() + "\n";
+  }
   make_directories(options.out_dir + "/particles");
   if (scene_metrics.writes_footprint()) make_directories(options.out_dir + "/footprint");
-  write_file_atomically(options.out_dir + "/scene.resolved.toml", loaded.resolved_toml);
-  std::string metrics =
-      "frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,max_speed,min_J,"
-      "plastic_work,gravity_work,collider_work,load_work,energy_residual" +
-      scene_metrics.header() + "\n";
-  double initial_energy = 0;  // kinetic + elastic at frame 0
+  if (!options.resume) write_file_atomically(options.out_dir + "/scene.resolved.toml", resolved_toml);
+  double step_seconds = progress.step_seconds;
+
   auto write_frame = [&](int frame) {
     const Diagnostics d = sim.diagnostics();
-    if (frame == 0) initial_energy = d.kinetic_energy + d.elastic_energy;
+    if (frame == 0) progress.initial_energy = d.kinetic_energy + d.elastic_energy;
     const EnergyBudget& b = sim.energy_budget();
-    const double residual =
-        initial_energy + b.gravity + b.colliders + b.loads - b.plastic - d.kinetic_energy - d.elastic_energy;
+    const double residual = progress.initial_energy + b.gravity + b.colliders + b.loads - b.plastic -
+                            d.kinetic_energy - d.elastic_energy;
     char row[768];
     std::snprintf(row, sizeof row,
                   "%d,%ld,%.9g,%.9g,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", frame,
                   sim.steps(), sim.time(), sim.last_dt(), sim.particle_count(), d.kinetic_energy, d.elastic_energy,
                   d.momentum[0], d.momentum[1], d.momentum[2], d.max_speed, d.min_J, b.plastic, b.gravity, b.colliders,
                   b.loads, residual);
-    metrics += row + scene_metrics.row(sim, options.out_dir + "/footprint/" + frame_name(frame)) + "\n";
+    progress.metrics += row + scene_metrics.row(sim, options.out_dir + "/footprint/" + frame_name(frame)) + "\n";
     write_particles_vtp(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
-    write_file_atomically(options.out_dir + "/metrics.csv", metrics);
+    write_file_atomically(options.out_dir + "/metrics.csv", progress.metrics);
     if (options.on_frame) {
       const ParticleView<T> view = sim.particles();
       std::vector<Collider<double>> colliders;  // where they are now
@@ -94,15 +114,35 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
       options.on_frame(describe_frame(sim, view, frame, colliders));
     }
   };
+  // The checkpoint of the run as it stands, heading for output frame `next_frame`.
+  auto capture = [&](int next_frame) {
+    progress.next_frame = next_frame;
+    progress.particle_steps = summary.particle_steps;
+    progress.step_seconds = step_seconds;
+    StateWriter out;
+    sim.save_state(out);
+    if (conveyor) conveyor->save_state(out);
+    progress.engine_state = out.bytes();
+  };
+  auto write_checkpoint_now = [&] { write_checkpoint(checkpoint_path(options.out_dir), resolved_toml, progress); };
 
   const int frames = std::max(1, int(std::ceil(scene.end_time / scene.frame_interval - 1e-9)));
-  double step_seconds = 0;
+  const double every = options.checkpoint_every;
+  double next_checkpoint = every > 0 ? every * std::floor(sim.time() / every + 1 + 1e-9) : 0;
+  bool captured_unwritten = false;  // progress holds a frame's state that is not on disk yet
+  int f = progress.next_frame;
   try {
-    write_frame(0);
-    for (int f = 1; f <= frames; ++f) {
+    if (options.resume) write_file_atomically(options.out_dir + "/metrics.csv", progress.metrics);
+    else write_frame(0);
+    for (; f <= frames; ++f) {
       const double target = std::min(scene.end_time, f * scene.frame_interval);
       while (sim.time() < target * (1 - 1e-12)) {
-        if (options.interrupt && options.interrupt->load()) throw std::runtime_error("interrupted");
+        if (options.interrupt && options.interrupt->load()) {
+          capture(f);
+          write_checkpoint_now();
+          captured_unwritten = false;
+          throw std::runtime_error("interrupted");
+        }
         const auto t0 = Clock::now();
         if (conveyor) conveyor->update(sim, sim.time());
         sim.step(std::min(sim.next_dt(), target - sim.time()));
@@ -111,6 +151,15 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
         if (options.progress) options.progress({sim.time(), scene.end_time, sim.steps(), f, frames, step_seconds});
       }
       write_frame(f);
+      if (every > 0 && f < frames) {
+        capture(f + 1);
+        captured_unwritten = true;
+        if (sim.time() >= next_checkpoint * (1 - 1e-12)) {
+          write_checkpoint_now();
+          captured_unwritten = false;
+          while (next_checkpoint <= sim.time() * (1 + 1e-12)) next_checkpoint += every;
+        }
+      }
     }
   } catch (const StabilityError& e) {
     summary.status = "unstable";
@@ -119,6 +168,14 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
     const bool interrupted = options.interrupt && options.interrupt->load();
     summary.status = interrupted ? "interrupted" : "failed";
     summary.error = interrupted ? "interrupted by a signal at t = " + std::to_string(sim.time()) + " s" : e.what();
+  }
+  // A guard stop or a failure leaves the last output frame's state as the checkpoint.
+  if (captured_unwritten && summary.status != "ok") {
+    try {
+      write_checkpoint_now();
+    } catch (const std::exception& e) {
+      summary.error += "; the checkpoint could not be written: " + std::string(e.what());
+    }
   }
   summary.steps = sim.steps();
   summary.simulated_time = sim.time();
