@@ -51,6 +51,15 @@ inline double material_param(const MaterialInfo& info, const std::string& key) {
   return info.param(key);  // throws, naming the key
 }
 
+// Nearly incompressible hyperelastic solids (rubber) get the F-bar volume averaging of
+// kernels/step/volume_average.hpp above this Poisson's ratio (issue 19: a smooth pressure at
+// nu 0.499); below it, and for the plastic snow models, nothing changes.
+constexpr double kVolumeAveragingNu = 0.45;
+inline bool uses_volume_averaging(const MaterialInfo& info) {
+  return (info.model == NeoHookean<double>::kName || info.model == MooneyRivlin<double>::kName) &&
+         info.moduli.nu > kVolumeAveragingNu;
+}
+
 template <class T>
 MaterialModel<T> make_material_model(const MaterialInfo& info) {
   const ElasticModuli& m = info.moduli;

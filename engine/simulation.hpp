@@ -7,7 +7,8 @@
 //   sim.advance_to(1.0);
 //
 // One step reads like the algorithm (DESIGN.md section 3):
-//   bin -> constitutive update (return mapping and stress, one launch per material) -> P2G ->
+//   bin -> F-bar volume averaging (nearly incompressible materials) -> constitutive update (return
+//   mapping and stress, one launch per material) -> P2G ->
 //   grid update (gravity, colliders, walls) -> G2P with the stability guard.
 #pragma once
 
@@ -52,6 +53,7 @@
 #include "kernels/step/grid_update_slots.hpp"
 #include "kernels/step/load_work.hpp"
 #include "kernels/step/p2g_scatter.hpp"
+#include "kernels/step/volume_average.hpp"
 #include "kernels/transfer.hpp"
 
 namespace firn {
@@ -127,7 +129,10 @@ class Simulation {
   }
 
   int add_material(const MaterialInfo& info) {
-    Material m{info, make_material_model<T>(info), {0, 0}, info.wave_speed()};
+    Material m{info, make_material_model<T>(info), {0, 0}, info.wave_speed(), uses_volume_averaging(info)};
+    if (m.volume_averaged && averaged_material_count() >= AveragedRanges::kMax)
+      throw std::invalid_argument("at most " + std::to_string(AveragedRanges::kMax) +
+                                  " nearly incompressible materials (F-bar volume averaging)");
     std::visit(
         [this](const auto& model) {
           using Model = std::decay_t<decltype(model)>;
@@ -434,7 +439,43 @@ class Simulation {
     MaterialModel<T> model;
     ParticleRange range;
     double wave_speed;  // max over its particles of sqrt(p_wave_modulus / density), last stress pass
+    bool volume_averaged;  // F-bar (kernels/step/volume_average.hpp) before its stress
   };
+
+  int averaged_material_count() const {
+    int n = 0;
+    for (const Material& m : materials_) n += m.volume_averaged;
+    return n;
+  }
+
+  // The physical index ranges of the averaged materials that have particles (valid after prepare()).
+  AveragedRanges averaged_ranges() const {
+    AveragedRanges r;
+    for (const Material& m : materials_)
+      if (m.volume_averaged && m.range.end > m.range.begin) {
+        r.begin[r.count] = m.range.begin;
+        r.end[r.count] = m.range.end;
+        ++r.count;
+      }
+    return r;
+  }
+
+  // F-bar by volume averaging (kernels/step/volume_average.hpp) for the averaged materials, on the
+  // grid activated by bin(), which it leaves cleared for P2G. No launch when none has particles.
+  template <class ShapeT>
+  void average_volume() {
+    const AveragedRanges averaged = averaged_ranges();
+    if (averaged.count == 0) return;
+    const ParticleView<T> pv = storage_.view();
+    const SparseGridView<T> gv = grid_.view();
+    const BinningView bins = binning_.view();
+    const GridGeometry<T> g = grid_.geometry();
+    backend_.scatter_blocks("volume_average.p2g", binning_.colouring(), VolumeScatter<T, ShapeT>{pv, gv, bins, g, averaged});
+    const std::vector<std::uint32_t>& blocks = binning_.particle_blocks();
+    backend_.gather_blocks("volume_average.g2p", blocks.data(), blocks.size(),
+                           VolumeGather<T, ShapeT>{pv, gv, bins, g, averaged}, Sum{});
+    grid_.clear(backend_);
+  }
 
   // The scalar state of save_state and load_state, once for both directions (the counts of
   // materials, loads and footprint columns are checked before).
@@ -466,10 +507,12 @@ class Simulation {
     return r;
   }
 
-  // One step: bin -> constitutive update -> P2G -> grid update -> G2P with the stability guard.
+  // One step: bin -> F-bar volume averaging (nearly incompressible materials only) -> constitutive
+  // update -> P2G -> grid update -> G2P with the stability guard.
   template <class ShapeT, Transfer kTransfer>
   void step_impl(T dt) {
     bin<ShapeT>(dt);
+    average_volume<ShapeT>();
     update_stress(dt);
     const GridGeometry<T> g = grid_.geometry();
     const ParticleView<T> pv = storage_.view();

@@ -61,8 +61,14 @@ class SparseGrid {
       coords_[3 * s + 1] = (id / blocks_[2]) % blocks_[1];
       coords_[3 * s + 2] = id % blocks_[2];
     }
+    data_.resize(slots_.size() * std::size_t(channels_) * kBlockNodes);
+    clear(backend);
+  }
+
+  // Zeroes every channel of the active blocks.
+  template <class Backend>
+  void clear(const Backend& backend) {
     const std::size_t per_block = std::size_t(channels_) * kBlockNodes;
-    data_.resize(slots_.size() * per_block);
     T* data = data_.data();
     backend.parallel_for("grid.clear", slots_.size(), [=] FIRN_HD_LAMBDA(std::size_t s) {
       for (std::size_t i = 0; i < per_block; ++i) data[s * per_block + i] = T(0);
