@@ -66,6 +66,17 @@ struct HyperelasticPlastic {
     return elastic.G1 * Jm23 * std::sqrt(ddot(dev, dev)) - std::sqrt(T(2) / T(3)) * hardening.yield_stress(state.alpha);
   }
 
+  // The work of the stress on the return's plastic strain increment per unit reference volume,
+  // s : dgamma n = sqrt(2/3) sigma_y dgamma = sigma_y d(alpha) on the yield surface, with sigma_y by
+  // the trapezoid rule over the step: exact on a linear-hardening path, second order otherwise
+  // (Simo and Hughes, Computational Inelasticity, sec. 2.3 and Box 9.1). The elastic energy drop
+  // W(F_trial) - W(F_returned) would exceed it by about G dgamma^2 per step.
+  FIRN_HD T plastic_work(const Mat3<T>&, const PlasticState<T>& before, const Mat3<T>&,
+                         const PlasticState<T>& after) const {
+    return T(0.5) * (hardening.yield_stress(before.alpha) + hardening.yield_stress(after.alpha)) *
+           (after.alpha - before.alpha);
+  }
+
   FIRN_HD bool project(Mat3<T>& F, PlasticState<T>& state) const {
     const T J = determinant(F);
     if (!(J > T(0))) return false;  // inverted or NaN: left for the stability guard to name

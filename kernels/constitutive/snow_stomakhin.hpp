@@ -47,6 +47,14 @@ struct SnowStomakhin {
     return hardened(state).energy_density(F);
   }
 
+  // The elastic energy the clamp takes out, W(F_trial; Jp_n) - W(F_returned; Jp_n+1): to first
+  // order in the step, the work of the stress on the plastic strain increment (the clamp has no
+  // flow rule whose work could be integrated instead).
+  FIRN_HD T plastic_work(const Mat3<T>& F_trial, const PlasticState<T>& before, const Mat3<T>& F_returned,
+                         const PlasticState<T>& after) const {
+    return energy_density(F_trial, before) - energy_density(F_returned, after);
+  }
+
   FIRN_HD bool project(Mat3<T>& F, PlasticState<T>& state) const {
     Mat3<T> U, V;
     Vec3<T> s;

@@ -3,11 +3,10 @@
 // written back only when it changed), then the Kirchhoff stress tau into the particle's columns.
 // The summary names the first particle with a non-finite stress (where NaNs are born, before P2G
 // spreads them) and the largest P-wave modulus K + 4G/3 (which sets the next time step). With
-// `plastic_work` set it also sums the energy the return mapping takes out of the elastic store,
-// V0 (W(F_trial) - W(F_returned)) (issue 19, the energy budget): to first order in the step's
-// increment, the work of the stress on the plastic strain increment, tau : d(eps_p) (dissipated or,
-// with hardening, partly stored in the hardening variable); for J2 it exceeds it by about
-// G d(gamma)^2 per step (README.md, "the energy budget").
+// `plastic_work` set it also sums V0 times each return mapping's plastic work density, the work
+// of the stress on the plastic strain increment, tau : d(eps_p) (dissipated or, with hardening,
+// partly stored in the hardening variable), as the model defines it (Model::plastic_work; issue 19,
+// the energy budget).
 #pragma once
 
 #include <algorithm>
@@ -36,13 +35,14 @@ struct MergeConstitutive {
 };
 
 // The return mapping of a plastic model, here and in the material driver (engine/material_driver.cpp);
-// when `work` is not null, the elastic energy density it takes out, W(F_trial) - W(F_returned), is
-// added to *work. Returns whether F changed.
+// when `work` is not null, the model's plastic work density of the return is added to *work.
+// Returns whether F changed.
 template <class T, class Model>
 FIRN_HD bool project_measuring_work(const Model& model, Mat3<T>& F, PlasticState<T>& state, T* work) {
-  const T trial = work ? model.energy_density(F, state) : T(0);
+  const Mat3<T> F_trial = F;
+  const PlasticState<T> before = state;
   if (!model.project(F, state)) return false;
-  if (work) *work += trial - model.energy_density(F, state);
+  if (work) *work += model.plastic_work(F_trial, before, F, state);
   return true;
 }
 
