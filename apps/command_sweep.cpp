@@ -39,7 +39,7 @@
 #include "apps/sweep/sweep_table.hpp"
 #include "engine/output/atomic_file.hpp"
 #include "engine/scene/scene_reader.hpp"
-#include "engine/units.hpp"
+#include "engine/scene/units.hpp"
 
 namespace firn::app {
 namespace {

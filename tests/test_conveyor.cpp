@@ -1,11 +1,11 @@
-// The conveyor snow bed (engine/conveyor.hpp) on the tire scene at a coarse grid: a roll longer
-// than the bed stays bounded in particles, every particle that enters or leaves is counted, and
-// the snow the tire has not reached yet is carried rigidly by the ground (an unbroken lattice).
+// The conveyor snow bed (engine/scene/conveyor.hpp) on the tire scene at a coarse grid: a roll
+// longer than the bed stays bounded in particles, every particle that enters or leaves is counted,
+// and the snow the tire has not reached yet is carried rigidly by the ground (an unbroken lattice).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "engine/conveyor.hpp"
+#include "engine/scene/conveyor.hpp"
 #include "engine/scene/scene_builder.hpp"
 #include "engine/scene/scene_reader.hpp"
 #include "kernels/backend/openmp.hpp"

@@ -9,7 +9,7 @@
 
 #include "apps/study/stability_checkerboard.hpp"
 #include "engine/backend_dispatch.hpp"
-#include "engine/conveyor.hpp"
+#include "engine/scene/conveyor.hpp"
 #include "engine/scene/scene_builder.hpp"
 
 namespace firn::study {

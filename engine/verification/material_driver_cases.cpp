@@ -1,8 +1,8 @@
 // Material-point driver problems (DESIGN.md section 6, problem 5): each constitutive model with the
-// thesis' parameters (material_catalog.cpp presets) along homogeneous paths (engine/material_driver.hpp).
+// thesis' parameters (material_catalog.cpp presets) along homogeneous paths (material_driver.hpp).
 // Every row is one check; its error and bound are stated beside it. Rows carry level 0, dx 0,
 // one particle and the number of increments as steps.
-#include "engine/material_driver.hpp"
+#include "engine/verification/material_driver.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,4 +1,4 @@
-#include "engine/material_driver.hpp"
+#include "engine/verification/material_driver.hpp"
 
 #include <cmath>
 #include <type_traits>

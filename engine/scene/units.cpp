@@ -1,4 +1,4 @@
-#include "engine/units.hpp"
+#include "engine/scene/units.hpp"
 
 #include <cerrno>
 #include <cmath>
