@@ -58,8 +58,7 @@ void fill_snow_block(ParticleStorage<float>& storage, long count, double dx) {
 }
 
 void bench_surface(const BenchSurfaceOptions& o) {
-  backend::OpenMP omp;
-  if (o.threads > 0) omp.thread_count = o.threads;
+  const backend::OpenMP omp(o.threads);
   surface::SurfaceParams params;
   params.simulation_dx = 0.01;
   ParticleStorage<float> storage;
@@ -122,9 +121,7 @@ void add_bench_command(CLI::App& app) {
     if (!backend) return;
     if (*backend == BackendKind::serial) return bench_step_serial(*opts);
     if (*backend == BackendKind::cuda) return bench_step_cuda(*opts);
-    backend::OpenMP omp;
-    if (opts->threads > 0) omp.thread_count = opts->threads;
-    bench_step_on(*opts, omp);
+    bench_step_on(*opts, backend::OpenMP(opts->threads));
   });
 
   auto surface_opts = std::make_shared<BenchSurfaceOptions>();

@@ -90,7 +90,7 @@ void add_render_command(CLI::App& app) {
                                   {o->dir + "/frames", o->video ? o->dir + "/video.mp4" : "", scene.spec.render.fps});
       const bool draw_surface = o->render == "surface";
       const surface::SurfaceParams params = scene_surface_params(scene.spec);
-      const backend::OpenMP omp = surface_backend(0);
+      const backend::OpenMP omp;
       const viz::VtpRestPositions rest = draw_surface ? viz::read_vtp_rest_positions(files.front().second)
                                                  : viz::VtpRestPositions{};
       for (const auto& [frame, path] : files) {

@@ -13,12 +13,6 @@ surface::SurfaceParams scene_surface_params(const SceneSpec& scene) {
   return params;
 }
 
-backend::OpenMP surface_backend(int threads) {
-  backend::OpenMP omp;
-  if (threads > 0) omp.thread_count = threads;
-  return omp;
-}
-
 surface::SurfaceMesh frame_surface(const FrameDescription& f, const surface::SurfaceParams& params,
                                    const backend::OpenMP& omp) {
   return f.particles_float ? surface::reconstruct_surface(*f.particles_float, params, omp)

@@ -14,9 +14,6 @@ namespace firn::app {
 // The reconstruction's defaults at the scene's resolution, with kernel_radius = 3.
 surface::SurfaceParams scene_surface_params(const SceneSpec& scene);
 
-// The OpenMP backend with `threads` threads (0: all cores).
-backend::OpenMP surface_backend(int threads);
-
 surface::SurfaceMesh frame_surface(const FrameDescription& f, const surface::SurfaceParams& params,
                                    const backend::OpenMP& omp);
 

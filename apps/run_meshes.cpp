@@ -12,7 +12,7 @@ std::function<void(const FrameDescription&)> start_run_meshes(const SceneSpec& s
                                                               int threads) {
   make_directories(out_dir + "/meshes");
   const surface::SurfaceParams params = scene_surface_params(scene);
-  const backend::OpenMP omp = surface_backend(threads);
+  const backend::OpenMP omp(threads);
   const std::string dir = out_dir + "/meshes/";
   return [params, omp, dir](const FrameDescription& f) {
     char name[32];

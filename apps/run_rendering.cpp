@@ -19,7 +19,7 @@ RunRendering start_run_rendering(const SceneSpec& scene, const std::string& out_
   const std::string color_by = scene.render.color_by;
   RunRendering r;
   const surface::SurfaceParams params = scene_surface_params(scene);
-  const backend::OpenMP omp = surface_backend(threads);
+  const backend::OpenMP omp(threads);
   r.on_frame = [pipeline, field, color_by, draw_surface, params, omp](const FrameDescription& f) {
     viz::RenderFrame frame = viz::engine_frame(f, color_by, *field);
     surface::SurfaceMesh mesh;

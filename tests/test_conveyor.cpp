@@ -17,9 +17,7 @@ TEST(Conveyor, ALongRollStaysBoundedAndTheIncomingSnowIsUndisturbed) {
   SceneOptions o;
   o.overrides = {"simulation.dx=0.01", "simulation.particles_per_cell=1", "conveyor.speed=20 mph", "tire.speed=20 mph"};
   const SceneSpec s = load_scene(std::string(FIRN_SOURCE_DIR) + "/scenes/tire_on_snow.toml", o).spec;
-  backend::OpenMP one_thread;
-  one_thread.thread_count = 1;
-  Simulation<float, backend::OpenMP> sim(s.config, one_thread);
+  Simulation<float, backend::OpenMP> sim(s.config, backend::OpenMP(1));
   const BuiltScene built = build_scene(s, sim);
   Conveyor conveyor(s, *s.conveyor);
   sim.prepare();
