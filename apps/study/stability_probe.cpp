@@ -4,13 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <type_traits>
 
 #include "apps/study/stability_checkerboard.hpp"
 #include "engine/backend_dispatch.hpp"
-#include "engine/scene/conveyor.hpp"
-#include "engine/scene/scene_builder.hpp"
+#include "engine/scene/scene_stepper.hpp"
 
 namespace firn::study {
 
@@ -42,10 +40,7 @@ template <class T, class Backend>
 class Probe {
  public:
   Probe(const SceneSpec& scene, const ProbeSettings& settings, const Backend& backend)
-      : scene_(scene), settings_(settings), sim_(scene.config, backend) {
-    build_scene(scene, sim_);
-    if (scene.conveyor) conveyor_.emplace(scene, *scene.conveyor);
-    sim_.prepare();
+      : scene_(scene), settings_(settings), stepper_(scene, backend), sim_(stepper_.sim()) {
     const Point& g = scene.config.gravity;
     const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
     for (int d = 0; d < 3; ++d) {
@@ -83,11 +78,10 @@ class Probe {
     };
     bool going = record(r.first);
     try {
-      while (going && sim_.time() < scene_.end_time * (1 - 1e-12) &&
+      while (going && stepper_.before(scene_.end_time) &&
              (settings_.max_steps <= 0 || sim_.steps() < settings_.max_steps)) {
-        if (conveyor_) conveyor_->update(sim_, sim_.time());
-        sim_.step(std::min(sim_.next_dt(), scene_.end_time - sim_.time()));
-        const bool last = !(sim_.time() < scene_.end_time * (1 - 1e-12)) ||
+        stepper_.step_toward(scene_.end_time);
+        const bool last = !stepper_.before(scene_.end_time) ||
                           (settings_.max_steps > 0 && sim_.steps() >= settings_.max_steps);
         if (last || sim_.steps() % settings_.sample_every == 0) going = record(r.last = sample());
       }
@@ -164,8 +158,8 @@ class Probe {
 
   const SceneSpec& scene_;
   const ProbeSettings& settings_;
-  Simulation<T, Backend> sim_;
-  std::optional<Conveyor> conveyor_;
+  SceneStepper<T, Backend> stepper_;
+  Simulation<T, Backend>& sim_;  // the stepper's
   double lowest_[3] = {0, 0, 0}, up_[3] = {0, 1, 0};
   std::vector<char> in_top_;  // by particle id
 };

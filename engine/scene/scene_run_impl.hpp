@@ -12,9 +12,9 @@
 
 #include "engine/output/atomic_file.hpp"
 #include "engine/output/vtp_writer.hpp"
-#include "engine/scene/scene_builder.hpp"
 #include "engine/scene/scene_metrics.hpp"
 #include "engine/scene/scene_run.hpp"
+#include "engine/scene/scene_stepper.hpp"
 
 namespace firn {
 namespace scene_run_detail {
@@ -48,15 +48,16 @@ template <class T, class Backend>
 RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backend& backend) {
   const auto wall0 = Clock::now();
   const SceneSpec& scene = loaded.spec;
-  Simulation<T, Backend> sim(scene.config, backend);
-  if (options.rest_positions) sim.enable(Attribute::x0);
-  const BuiltScene built = build_scene(scene, sim);
-  std::optional<Conveyor> conveyor;
-  if (scene.conveyor) conveyor.emplace(scene, *scene.conveyor);
-  SceneMetrics<T, Backend> scene_metrics(scene, built, conveyor ? &*conveyor : nullptr);
-  scene_metrics.prepare(sim);
-  sim.enable_energy_budget();
-  sim.prepare();
+  std::optional<SceneMetrics<T, Backend>> scene_metrics;
+  SceneStepperOptions<T, Backend> stepper_options;
+  stepper_options.rest_positions = options.rest_positions;
+  stepper_options.before_prepare = [&](Simulation<T, Backend>& sim, const BuiltScene& built, const Conveyor* conveyor) {
+    scene_metrics.emplace(scene, built, conveyor);
+    scene_metrics->prepare(sim);
+    sim.enable_energy_budget();
+  };
+  SceneStepper<T, Backend> stepper(scene, backend, stepper_options);
+  Simulation<T, Backend>& sim = stepper.sim();
 
   RunSummary summary;
   summary.particles = sim.particle_count();
@@ -65,12 +66,12 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
   summary.precision = scene.precision;
 
   make_directories(options.out_dir + "/particles");
-  if (scene_metrics.writes_footprint()) make_directories(options.out_dir + "/footprint");
+  if (scene_metrics->writes_footprint()) make_directories(options.out_dir + "/footprint");
   write_file_atomically(options.out_dir + "/scene.resolved.toml", loaded.resolved_toml);
   std::string metrics =
       "frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,max_speed,min_J,"
       "plastic_work,gravity_work,collider_work,load_work,energy_residual" +
-      scene_metrics.header() + "\n";
+      scene_metrics->header() + "\n";
   double initial_energy = 0;  // kinetic + elastic at frame 0
   auto write_frame = [&](int frame) {
     const Diagnostics d = sim.diagnostics();
@@ -84,7 +85,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
                   sim.steps(), sim.time(), sim.last_dt(), sim.particle_count(), d.kinetic_energy, d.elastic_energy,
                   d.momentum[0], d.momentum[1], d.momentum[2], d.max_speed, d.min_J, b.plastic, b.gravity, b.colliders,
                   b.loads, residual);
-    metrics += row + scene_metrics.row(sim, options.out_dir + "/footprint/" + frame_name(frame)) + "\n";
+    metrics += row + scene_metrics->row(sim, options.out_dir + "/footprint/" + frame_name(frame)) + "\n";
     write_particles_vtp(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
     write_file_atomically(options.out_dir + "/metrics.csv", metrics);
     if (options.on_frame) {
@@ -101,11 +102,10 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
     write_frame(0);
     for (int f = 1; f <= frames; ++f) {
       const double target = std::min(scene.end_time, f * scene.frame_interval);
-      while (sim.time() < target * (1 - 1e-12)) {
+      while (stepper.before(target)) {
         if (options.interrupt && options.interrupt->load()) throw std::runtime_error("interrupted");
         const auto t0 = Clock::now();
-        if (conveyor) conveyor->update(sim, sim.time());
-        sim.step(std::min(sim.next_dt(), target - sim.time()));
+        stepper.step_toward(target);
         step_seconds += seconds_since(t0);
         summary.particle_steps += double(sim.particle_count());
         if (options.progress) options.progress({sim.time(), scene.end_time, sim.steps(), f, frames, step_seconds});
