@@ -21,11 +21,11 @@
 #include <vector>
 
 #include "apps/backend_option.hpp"
-#include "apps/bench_step.hpp"
 #include "apps/commands.hpp"
 #include "apps/run_rendering.hpp"
 #include "engine/particle_storage.hpp"
 #include "kernels/backend/openmp.hpp"
+#include "studies/bench/step_benchmark.hpp"
 #include "viz/surface/mesh_topology.hpp"
 #include "viz/surface/reconstruct_surface.hpp"
 
@@ -98,7 +98,7 @@ void set_exit_status(int status) { g_status = status; }
 void add_bench_command(CLI::App& app) {
   CLI::App* bench = app.add_subcommand("bench", "time the engine's kernels and step loop");
   bench->require_subcommand(1);
-  auto opts = std::make_shared<BenchStepOptions>();
+  auto opts = std::make_shared<bench::BenchStepOptions>();
   CLI::App* step = bench->add_subcommand("step", "time the step loop on a reference problem");
   step->add_option("--problem", opts->problem, "reference problem")->check(CLI::IsMember({"cube_drop"}))
       ->capture_default_str();
@@ -119,9 +119,9 @@ void add_bench_command(CLI::App& app) {
   step->callback([opts]() {
     const std::optional<BackendKind> backend = usable_backend(opts->backend);
     if (!backend) return;
-    if (*backend == BackendKind::serial) return bench_step_serial(*opts);
-    if (*backend == BackendKind::cuda) return bench_step_cuda(*opts);
-    bench_step_on(*opts, backend::OpenMP(opts->threads));
+    if (*backend == BackendKind::serial) return bench::bench_step_serial(*opts);
+    if (*backend == BackendKind::cuda) return bench::bench_step_cuda(*opts);
+    bench::bench_step_on(*opts, backend::OpenMP(opts->threads));
   });
 
   auto surface_opts = std::make_shared<BenchSurfaceOptions>();

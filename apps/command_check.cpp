@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "apps/commands.hpp"
-#include "apps/sweep/child_process.hpp"
 #include "engine/scene/scene_builder.hpp"
 #include "engine/scene/scene_lookup.hpp"
 #include "engine/scene/scene_schema.hpp"
 #include "kernels/backend/serial.hpp"
+#include "studies/sweep/child_process.hpp"
 
 namespace firn::app {
 namespace {

@@ -18,10 +18,10 @@
 #include <vector>
 
 #include "apps/commands.hpp"
-#include "apps/study/accuracy_plot.hpp"
-#include "apps/study/accuracy_report.hpp"
-#include "apps/study/study_options.hpp"
+#include "apps/study_options.hpp"
 #include "engine/output/atomic_file.hpp"
+#include "studies/accuracy/accuracy_plot.hpp"
+#include "studies/accuracy/accuracy_report.hpp"
 
 namespace firn::app {
 namespace {

@@ -27,17 +27,17 @@
 #include <vector>
 
 #include "apps/commands.hpp"
-#include "apps/study/stability_cfl.hpp"
-#include "apps/study/stability_impact.hpp"
-#include "apps/study/stability_long_run.hpp"
-#include "apps/study/stability_random_runs.hpp"
-#include "apps/study/stability_report.hpp"
-#include "apps/study/stability_scenes.hpp"
-#include "apps/study/study_options.hpp"
-#include "apps/sweep/child_process.hpp"
-#include "apps/sweep/csv.hpp"
-#include "apps/sweep/gnuplot.hpp"
+#include "apps/study_options.hpp"
 #include "engine/output/atomic_file.hpp"
+#include "studies/stability/stability_cfl.hpp"
+#include "studies/stability/stability_impact.hpp"
+#include "studies/stability/stability_long_run.hpp"
+#include "studies/stability/stability_random_runs.hpp"
+#include "studies/stability/stability_report.hpp"
+#include "studies/stability/stability_scenes.hpp"
+#include "studies/sweep/child_process.hpp"
+#include "studies/sweep/csv.hpp"
+#include "studies/sweep/gnuplot.hpp"
 
 namespace firn::app {
 namespace {
@@ -314,7 +314,7 @@ class StabilityStudy {
            "wall (J <= 0) or a particle flung faster than the step allows.\n"
            "- **Pressure checkerboard**: RMS over particles of (p_i - mean pressure of the other particles within "
            "dx) divided by |mean pressure|, at the end of a 40 x 20 x 40 mm block squeezed on a sticky floor by its own "
-           "weight under 2000 m/s^2, a smooth pressure from 0 to 37 kPa (apps/study/stability_checkerboard.hpp).\n"
+           "weight under 2000 m/s^2, a smooth pressure from 0 to 37 kPa (studies/stability/stability_checkerboard.hpp).\n"
            "- **Long run**: energy drift (E_end - E_0) / E_0 and creep (settling speed of the top layer, "
            "least-squares over the second half); plot long_run.png.\n"
            "- **Random scenes**: each a `firn run` child with 1 thread; finished or guard_stop pass, crash, bad_input "

@@ -30,16 +30,16 @@
 
 #include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
-#include "apps/sweep/child_process.hpp"
-#include "apps/sweep/combinations.hpp"
-#include "apps/sweep/gnuplot.hpp"
-#include "apps/sweep/metric_plot.hpp"
-#include "apps/sweep/run_record.hpp"
-#include "apps/sweep/slurm_job.hpp"
-#include "apps/sweep/sweep_table.hpp"
 #include "engine/output/atomic_file.hpp"
 #include "engine/scene/scene_reader.hpp"
 #include "engine/scene/units.hpp"
+#include "studies/sweep/child_process.hpp"
+#include "studies/sweep/combinations.hpp"
+#include "studies/sweep/gnuplot.hpp"
+#include "studies/sweep/metric_plot.hpp"
+#include "studies/sweep/run_record.hpp"
+#include "studies/sweep/slurm_job.hpp"
+#include "studies/sweep/sweep_table.hpp"
 
 namespace firn::app {
 namespace {

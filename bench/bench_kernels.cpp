@@ -8,8 +8,8 @@
 #include <chrono>
 #include <string>
 
-#include "engine/reference_problems.hpp"
 #include "kernels/backend/openmp.hpp"
+#include "studies/bench/reference_problems.hpp"
 
 namespace firn {
 namespace {
