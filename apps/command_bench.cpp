@@ -22,7 +22,6 @@
 
 #include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
-#include "apps/run_rendering.hpp"
 #include "engine/particle_storage.hpp"
 #include "kernels/backend/openmp.hpp"
 #include "studies/bench/step_benchmark.hpp"

@@ -1,7 +1,7 @@
 // firn run SCENE [--out DIR] [--set KEY=VALUE]... [--threads N] [--backend serial|openmp|cuda] [--preview]
 //                [--render none|spheres|surface] [--video] [--mesh] [--gl egl|osmesa]
 // With --render spheres or surface, every output frame is also drawn to frames/NNNNN.png (and
-// video.mp4); surface draws the reconstructed snow surface (apps/frame_surface.hpp).
+// video.mp4); surface draws the reconstructed snow surface (viz/surface/frame_surface.hpp).
 // Validates the scene (any fault: one line on standard error, exit status 2, nothing written),
 // runs it with progress on a terminal, and writes the outputs of DESIGN.md section 5.
 // Exit status: 0 completed, 1 unstable or failed, 2 bad scene or options, 130 interrupted.
@@ -17,9 +17,9 @@
 
 #include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
-#include "apps/run_meshes.hpp"
-#include "apps/run_rendering.hpp"
 #include "engine/scene/scene_run.hpp"
+#include "viz/run_rendering.hpp"
+#include "viz/surface/run_meshes.hpp"
 
 namespace firn::app {
 namespace {
@@ -102,10 +102,10 @@ void add_run_command(CLI::App& app) {
     options.backend = *backend;
     options.threads = o->threads;
     options.interrupt = &g_interrupted;
-    RunRendering rendering;
+    viz::RunRendering rendering;
     if (o->render != "none") {
       try {
-        rendering = start_run_rendering(scene.spec, options.out_dir, o->video, o->gl, o->render == "surface", o->threads);
+        rendering = viz::start_run_rendering(scene.spec, options.out_dir, o->video, o->gl, o->render == "surface", o->threads);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "firn run: cannot render: %s\n", e.what());
         set_exit_status(2);
@@ -117,7 +117,7 @@ void add_run_command(CLI::App& app) {
     if (o->mesh || o->render == "surface") options.rest_positions = true;
     if (o->mesh) {
       const auto draw = options.on_frame;
-      const auto meshes = start_run_meshes(scene.spec, options.out_dir, o->threads);
+      const auto meshes = surface::start_run_meshes(scene.spec, options.out_dir, o->threads);
       options.on_frame = [draw, meshes](const FrameDescription& f) {
         if (draw) draw(f);
         meshes(f);

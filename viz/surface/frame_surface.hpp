@@ -1,4 +1,4 @@
-// The snow surface of one output frame (viz/surface), for `--mesh` and `--render surface`:
+// The snow surface of one output frame of a run, for `firn run --mesh` and `--render surface`:
 // reconstructed from the engine's own particle columns, noise and crystals anchored to the rest
 // positions x0 when the run keeps them (RunOptions::rest_positions).
 #pragma once
@@ -9,12 +9,11 @@
 #include "viz/surface/surface_mesh.hpp"
 #include "viz/surface/surface_params.hpp"
 
-namespace firn::app {
+namespace firn::surface {
 
 // The reconstruction's defaults at the scene's resolution, with kernel_radius = 3.
-surface::SurfaceParams scene_surface_params(const SceneSpec& scene);
+SurfaceParams scene_surface_params(const SceneSpec& scene);
 
-surface::SurfaceMesh frame_surface(const FrameDescription& f, const surface::SurfaceParams& params,
-                                   const backend::OpenMP& omp);
+SurfaceMesh frame_surface(const FrameDescription& f, const SurfaceParams& params, const backend::OpenMP& omp);
 
-}  // namespace firn::app
+}  // namespace firn::surface

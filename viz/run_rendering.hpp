@@ -1,8 +1,7 @@
 // The renderer as `firn run` uses it: a frame hook for the run and a finish step, or an error
-// when firn was built without viz/ or no OpenGL context can be made.
+// when no OpenGL context can be made. A build without the renderer (no viz/ library) has a stand-in
+// that says so (apps/render_unavailable.cpp).
 #pragma once
-
-#include <CLI/CLI.hpp>
 
 #include <functional>
 #include <string>
@@ -10,7 +9,7 @@
 #include "engine/scene/frame_description.hpp"
 #include "engine/scene/scene.hpp"
 
-namespace firn::app {
+namespace firn::viz {
 
 struct RunRendering {
   std::function<void(const FrameDescription&)> on_frame;
@@ -20,13 +19,9 @@ struct RunRendering {
 
 // Frames go to OUT_DIR/frames/NNNNN.png, and with `video` to OUT_DIR/video.mp4. `gl`: "egl",
 // "osmesa" or "" (EGL, falling back to OSMesa). With `draw_surface` each frame's snow surface is
-// reconstructed (apps/frame_surface.hpp, `threads` as for the run) and drawn instead of the
+// reconstructed (viz/surface/frame_surface.hpp, `threads` as for the run) and drawn instead of the
 // particles. Throws std::runtime_error.
 RunRendering start_run_rendering(const SceneSpec& scene, const std::string& out_dir, bool video, const std::string& gl,
                                  bool draw_surface, int threads);
 
-// firn render OUTDIR ... and firn bench render ...
-void add_render_command(CLI::App& app);
-void add_bench_render_command(CLI::App& bench);
-
-}  // namespace firn::app
+}  // namespace firn::viz
