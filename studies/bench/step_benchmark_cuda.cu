@@ -1,9 +1,11 @@
-#include "studies/bench/step_benchmark.hpp"
+#include "studies/bench/step_benchmark_impl.hpp"
 
 #include "kernels/backend/cuda.hpp"
 
 namespace firn::bench {
 
-void bench_step_cuda(const BenchStepOptions& o) { bench_step_on(o, backend::Cuda{}); }
+StepBenchmarkResult benchmark_step_cuda(const StepBenchmarkOptions& o) {
+  return benchmark_step_on(o, backend::Cuda{});
+}
 
 }  // namespace firn::bench

@@ -3,10 +3,12 @@
 #include <stdexcept>
 
 #include "engine/cuda_device.hpp"
-#include "studies/bench/step_benchmark.hpp"
+#include "studies/bench/step_benchmark_impl.hpp"
 
 namespace firn::bench {
 
-void bench_step_cuda(const BenchStepOptions&) { throw std::runtime_error(cuda_unavailable_reason()); }
+StepBenchmarkResult benchmark_step_cuda(const StepBenchmarkOptions&) {
+  throw std::runtime_error(cuda_unavailable_reason());
+}
 
 }  // namespace firn::bench
