@@ -8,87 +8,41 @@
 // firn bench surface [--particles N] [--threads N] [--repeats N]
 // Times the snow surface reconstruction of a synthetic snow block; prints particles_per_second and
 // checks that the mesh is a closed manifold (outside the timing).
-#include <algorithm>
-#include <chrono>
 #include <cinttypes>
-#include <cmath>
 #include <cstdio>
-#include <map>
 #include <optional>
-#include <stdexcept>
-#include <random>
 #include <string>
-#include <vector>
 
 #include "apps/backend_option.hpp"
-#include "apps/bench_step.hpp"
 #include "apps/commands.hpp"
-#include "apps/run_rendering.hpp"
-#include "engine/particle_storage.hpp"
-#include "kernels/backend/openmp.hpp"
-#include "viz/surface/mesh_topology.hpp"
-#include "viz/surface/reconstruct_surface.hpp"
+#include "studies/bench/step_benchmark.hpp"
+#include "studies/bench/surface_benchmark.hpp"
 
 namespace firn::app {
 namespace {
 
 int g_status = 0;
 
-struct BenchSurfaceOptions {
-  long particles = 100000;
-  int threads = 0;  // 0: all cores
-  int repeats = 5;
-};
-
-// A synthetic snow block: a jittered lattice at 8 particles per cell of dx = 0.01 m (spacing
-// dx/2, jitter +-dx/8), as wide as deep and as tall as the count needs, rest positions = positions.
-void fill_snow_block(ParticleStorage<float>& storage, long count, double dx) {
-  const double spacing = dx / 2;
-  const long side = std::max(1L, std::lround(std::cbrt(double(count))));
-  storage.enable(Attribute::x0);
-  storage.resize(std::size_t(count));
-  ParticleView<float> pv = storage.view();
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> jitter(-0.25, 0.25);
-  for (long p = 0; p < count; ++p) {
-    const long lattice[3] = {p % side, p / (side * side), p / side % side};
-    for (int d = 0; d < 3; ++d) pv.x[d][p] = pv.x0[d][p] = float((lattice[d] + 0.5 + jitter(random)) * spacing);
-    pv.vol0[p] = float(spacing * spacing * spacing);
-  }
+void print_step_benchmark(const bench::StepBenchmarkOptions& o) {
+  const bench::StepBenchmarkResult r = bench::benchmark_step(o);
+  std::printf("problem %s\nprecision %s\ntransfer %s\nbackend %s\nthreads %d\nparticles %zu\nbytes_per_particle %zu\n"
+              "steps %d\nseconds %.4f\n",
+              o.problem.c_str(), o.precision.c_str(), o.transfer.c_str(), r.backend.c_str(), r.threads, r.particles,
+              r.bytes_per_particle, o.steps, r.seconds);
+  std::printf("grid_blocks_active %zu\ngrid_memory_mb %.2f\n", r.grid_blocks_active, r.grid_memory_bytes / 1048576.0);
+  std::printf("particle_steps_per_second %.0f\nstate_hash %016" PRIx64 "\n", r.particle_steps_per_second, r.state_hash);
 }
 
-void bench_surface(const BenchSurfaceOptions& o) {
-  backend::OpenMP omp;
-  if (o.threads > 0) omp.thread_count = o.threads;
-  surface::SurfaceParams params;
-  params.simulation_dx = 0.01;
-  ParticleStorage<float> storage;
-  fill_snow_block(storage, o.particles, params.simulation_dx);
-  std::vector<surface::SurfaceTimings> runs(std::size_t(o.repeats));
-  surface::SurfaceMesh mesh;
-  for (auto& run : runs) mesh = surface::reconstruct_surface(storage.view(), params, omp, &run);
-  // Medians of each stage and of the total without and with the crystals.
-  auto median = [&runs](auto seconds_of) {
-    std::vector<double> values;
-    for (const auto& run : runs) values.push_back(seconds_of(run));
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-  };
-  using Timings = surface::SurfaceTimings;
-  const double surface_seconds = median([](const Timings& t) { return t.total() - t.crystals; });
-  const double all_seconds = median([](const Timings& t) { return t.total(); });
-  const surface::MeshTopology topology = surface::analyse_topology(mesh.triangles, mesh.vertex_count());
+void print_surface_benchmark(const bench::SurfaceBenchmarkOptions& o) {
+  const bench::SurfaceBenchmarkResult r = bench::benchmark_surface(o);
   std::printf("particles %ld\nthreads %d\nrepeats %d\nvertices %zu\ntriangles %zu\ncrystals %zu\n", o.particles,
-              omp.threads(), o.repeats, mesh.vertex_count(), mesh.triangle_count(), mesh.crystals.size());
-  std::printf("closed_manifold %d\neuler_characteristic %ld\n", int(topology.closed_manifold()),
-              topology.euler_characteristic());
+              r.threads, o.repeats, r.vertices, r.triangles, r.crystals);
+  std::printf("closed_manifold %d\neuler_characteristic %ld\n", int(r.closed_manifold), r.euler_characteristic);
   std::printf("field_seconds %.4f\nmarching_seconds %.4f\nsmoothing_seconds %.4f\nnoise_normals_seconds %.4f\n"
               "crystals_seconds %.4f\n",
-              median([](const Timings& t) { return t.field; }), median([](const Timings& t) { return t.marching; }),
-              median([](const Timings& t) { return t.smoothing; }), median([](const Timings& t) { return t.detail; }),
-              median([](const Timings& t) { return t.crystals; }));
-  std::printf("seconds %.4f\nparticles_per_second %.0f\nparticles_per_second_with_crystals %.0f\n", surface_seconds,
-              double(o.particles) / surface_seconds, double(o.particles) / all_seconds);
+              r.stages.field, r.stages.marching, r.stages.smoothing, r.stages.detail, r.stages.crystals);
+  std::printf("seconds %.4f\nparticles_per_second %.0f\nparticles_per_second_with_crystals %.0f\n", r.seconds,
+              double(o.particles) / r.seconds, double(o.particles) / r.seconds_with_crystals);
 }
 
 }  // namespace
@@ -99,7 +53,12 @@ void set_exit_status(int status) { g_status = status; }
 void add_bench_command(CLI::App& app) {
   CLI::App* bench = app.add_subcommand("bench", "time the engine's kernels and step loop");
   bench->require_subcommand(1);
-  auto opts = std::make_shared<BenchStepOptions>();
+  struct StepOptions {
+    bench::StepBenchmarkOptions benchmark;
+    std::string backend = "openmp";
+  };
+  auto step_opts = std::make_shared<StepOptions>();
+  bench::StepBenchmarkOptions* opts = &step_opts->benchmark;
   CLI::App* step = bench->add_subcommand("step", "time the step loop on a reference problem");
   step->add_option("--problem", opts->problem, "reference problem")->check(CLI::IsMember({"cube_drop"}))
       ->capture_default_str();
@@ -116,18 +75,15 @@ void add_bench_command(CLI::App& app) {
   step->add_option("--domain-scale", opts->domain_scale,
                    "scale the domain box (same particles) to show that cost follows the particles")
       ->check(CLI::Range(1.0, 16.0))->capture_default_str();
-  add_backend_option(step, opts->backend);
-  step->callback([opts]() {
-    const std::optional<BackendKind> backend = usable_backend(opts->backend);
+  add_backend_option(step, step_opts->backend);
+  step->callback([step_opts]() {
+    const std::optional<BackendKind> backend = usable_backend(step_opts->backend);
     if (!backend) return;
-    if (*backend == BackendKind::serial) return bench_step_serial(*opts);
-    if (*backend == BackendKind::cuda) return bench_step_cuda(*opts);
-    backend::OpenMP omp;
-    if (opts->threads > 0) omp.thread_count = opts->threads;
-    bench_step_on(*opts, omp);
+    step_opts->benchmark.backend = *backend;
+    print_step_benchmark(step_opts->benchmark);
   });
 
-  auto surface_opts = std::make_shared<BenchSurfaceOptions>();
+  auto surface_opts = std::make_shared<bench::SurfaceBenchmarkOptions>();
   CLI::App* surface = bench->add_subcommand("surface", "time the snow surface reconstruction of a synthetic block");
   surface->add_option("--particles", surface_opts->particles, "particles in the block")->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -135,7 +91,7 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   surface->add_option("--repeats", surface_opts->repeats, "timed runs; the medians are printed")
       ->check(CLI::PositiveNumber)->capture_default_str();
-  surface->callback([surface_opts]() { bench_surface(*surface_opts); });
+  surface->callback([surface_opts]() { print_surface_benchmark(*surface_opts); });
   add_bench_render_command(*bench);
 }
 

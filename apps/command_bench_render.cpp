@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "apps/commands.hpp"
-#include "apps/run_rendering.hpp"
 #include "viz/camera.hpp"
 #include "viz/frame_pipeline.hpp"
 #include "viz/frame_renderer.hpp"

@@ -1,45 +1,16 @@
 // firn render OUTDIR [--render spheres|surface] [--video] [--set render.KEY=VALUE]... [--gl egl|osmesa]
 // Re-renders a finished run from OUTDIR/particles/NNNNN.vtp and OUTDIR/scene.resolved.toml, with
 // the [render] settings (and materials' colours) changed by --set, into OUTDIR/frames (and
-// OUTDIR/video.mp4). Surfaces anchor their noise and crystals to the first frame's positions
-// (viz/vtp_frame.hpp).
-#include <dirent.h>
-
-#include <algorithm>
+// OUTDIR/video.mp4), by viz/rerender_run.hpp.
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "apps/commands.hpp"
-#include "apps/frame_surface.hpp"
-#include "apps/run_rendering.hpp"
-#include "engine/output/atomic_file.hpp"
 #include "engine/scene/scene_reader.hpp"
-#include "viz/frame_pipeline.hpp"
-#include "viz/scene_render_settings.hpp"
-#include "viz/surface/reconstruct_surface.hpp"
-#include "viz/vtp_frame.hpp"
+#include "viz/rerender_run.hpp"
 
 namespace firn::app {
-namespace {
-
-// NNNNN.vtp files of the folder, in frame order.
-std::vector<std::pair<int, std::string>> particle_files(const std::string& dir) {
-  std::vector<std::pair<int, std::string>> files;
-  if (DIR* d = ::opendir(dir.c_str())) {
-    while (const dirent* e = ::readdir(d)) {
-      const std::string name = e->d_name;
-      if (name.size() == 9 && name.substr(5) == ".vtp" &&
-          std::all_of(name.begin(), name.begin() + 5, [](char c) { return c >= '0' && c <= '9'; }))
-        files.emplace_back(std::stoi(name.substr(0, 5)), dir + "/" + name);
-    }
-    ::closedir(d);
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-}  // namespace
 
 void add_render_command(CLI::App& app) {
   struct Options {
@@ -78,34 +49,17 @@ void add_render_command(CLI::App& app) {
       set_exit_status(2);
       return;
     }
-    const auto files = particle_files(o->dir + "/particles");
+    const auto files = viz::particle_files(o->dir + "/particles");
     if (files.empty()) {
       std::fprintf(stderr, "firn render: no particle files in %s/particles\n", o->dir.c_str());
       set_exit_status(2);
       return;
     }
     try {
-      make_directories(o->dir + "/frames");
-      viz::FramePipeline pipeline(viz::scene_render_settings(scene.spec), viz::parse_gl_api(o->gl),
-                                  {o->dir + "/frames", o->video ? o->dir + "/video.mp4" : "", scene.spec.render.fps});
-      const bool draw_surface = o->render == "surface";
-      const surface::SurfaceParams params = scene_surface_params(scene.spec);
-      const backend::OpenMP omp = surface_backend(0);
-      const viz::VtpRestPositions rest = draw_surface ? viz::read_vtp_rest_positions(files.front().second)
-                                                 : viz::VtpRestPositions{};
-      for (const auto& [frame, path] : files) {
-        const viz::VtpFrame particles(path, frame, scene.spec, draw_surface ? &rest : nullptr);
-        viz::RenderFrame r = particles.render_frame();
-        surface::SurfaceMesh mesh;
-        if (draw_surface) {
-          mesh = surface::reconstruct_surface(particles.particle_view(), params, omp);
-          r.surface = &mesh;
-        }
-        pipeline.add(r);
-      }
-      pipeline.finish();
-      std::printf("rendered %zu frames into %s/frames%s (%s)\n", files.size(), o->dir.c_str(),
-                  o->video ? ", video.mp4" : "", pipeline.gl_description().c_str());
+      const viz::RerenderResult r =
+          viz::rerender_run(scene.spec, files, {o->dir, o->render == "surface", o->video, o->gl});
+      std::printf("rendered %zu frames into %s/frames%s (%s)\n", r.frames, o->dir.c_str(), o->video ? ", video.mp4" : "",
+                  r.description.c_str());
     } catch (const std::exception& e) {
       std::fprintf(stderr, "firn render: %s\n", e.what());
       set_exit_status(1);

@@ -3,7 +3,7 @@
 // firn run --resume DIR [--threads N] [--backend ...] [--render ...] [--video] [--mesh] [--gl ...]
 //                [--checkpoint-every TIME]
 // With --render spheres or surface, every output frame is also drawn to frames/NNNNN.png (and
-// video.mp4); surface draws the reconstructed snow surface (apps/frame_surface.hpp).
+// video.mp4); surface draws the reconstructed snow surface (viz/surface/frame_surface.hpp).
 // Validates the scene (any fault: one line on standard error, exit status 2, nothing written),
 // runs it with progress on a terminal, and writes the outputs of DESIGN.md section 5.
 // An interrupt writes DIR/checkpoint.firn, and so does --checkpoint-every at the frames it names;
@@ -21,12 +21,12 @@
 
 #include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
-#include "apps/run_meshes.hpp"
-#include "apps/run_rendering.hpp"
 #include "engine/output/atomic_file.hpp"
 #include "engine/scene/checkpoint.hpp"
 #include "engine/scene/scene_run.hpp"
-#include "engine/units.hpp"
+#include "engine/scene/units.hpp"
+#include "viz/run_rendering.hpp"
+#include "viz/surface/run_meshes.hpp"
 
 namespace firn::app {
 namespace {
@@ -145,10 +145,10 @@ void add_run_command(CLI::App& app) {
     options.backend = *backend;
     options.threads = o->threads;
     options.interrupt = &g_interrupted;
-    RunRendering rendering;
+    viz::RunRendering rendering;
     if (o->render != "none") {
       try {
-        rendering = start_run_rendering(scene.spec, options.out_dir, o->video, o->gl, o->render == "surface", o->threads);
+        rendering = viz::start_run_rendering(scene.spec, options.out_dir, o->video, o->gl, o->render == "surface", o->threads);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "firn run: cannot render: %s\n", e.what());
         set_exit_status(2);
@@ -160,7 +160,7 @@ void add_run_command(CLI::App& app) {
     if (o->mesh || o->render == "surface") options.rest_positions = true;
     if (o->mesh) {
       const auto draw = options.on_frame;
-      const auto meshes = start_run_meshes(scene.spec, options.out_dir, o->threads);
+      const auto meshes = surface::start_run_meshes(scene.spec, options.out_dir, o->threads);
       options.on_frame = [draw, meshes](const FrameDescription& f) {
         if (draw) draw(f);
         meshes(f);

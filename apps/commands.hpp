@@ -16,9 +16,13 @@ void add_sweep_command(CLI::App& app);
 void add_study_command(CLI::App& app);
 void add_help_command(CLI::App& app);
 
+// firn render OUTDIR ... and firn bench render ... (without the renderer: apps/render_unavailable.cpp).
+void add_render_command(CLI::App& app);
+void add_bench_render_command(CLI::App& bench);
+
 // Sub-commands of `firn study`.
-void add_study_accuracy_command(CLI::App& study);
-void add_study_stability_command(CLI::App& study);
+void add_study_accuracy_command(CLI::App& study_command);
+void add_study_stability_command(CLI::App& study_command);
 
 // The folder of the scenes shipped with firn (installed: PREFIX/share/firn/scenes; in the build
 // folder: the source tree's scenes/), and the file a SCENE argument names, a shipped scene's name

@@ -8,7 +8,6 @@
 #include <exception>
 
 #include "apps/commands.hpp"
-#include "apps/run_rendering.hpp"
 #include "engine/version.hpp"
 
 namespace {

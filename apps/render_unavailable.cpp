@@ -4,9 +4,9 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
-#include "apps/run_rendering.hpp"
+#include "viz/run_rendering.hpp"
 
-namespace firn::app {
+namespace firn {
 namespace {
 
 const char* const kMissing =
@@ -17,17 +17,19 @@ void add_unavailable(CLI::App& parent, const char* name, const char* what) {
   c->allow_extras();
   c->callback([] {
     std::fprintf(stderr, "%s\n", kMissing);
-    set_exit_status(2);
+    app::set_exit_status(2);
   });
 }
 
 }  // namespace
 
-RunRendering start_run_rendering(const SceneSpec&, const std::string&, bool, const std::string&, bool, int) {
+viz::RunRendering viz::start_run_rendering(const SceneSpec&, const std::string&, bool, const std::string&, bool, int) {
   throw std::runtime_error(kMissing);
 }
 
-void add_render_command(CLI::App& app) { add_unavailable(app, "render", "re-render a finished run (not built)"); }
-void add_bench_render_command(CLI::App& bench) { add_unavailable(bench, "render", "time the renderer (not built)"); }
+void app::add_render_command(CLI::App& app) { add_unavailable(app, "render", "re-render a finished run (not built)"); }
+void app::add_bench_render_command(CLI::App& bench) {
+  add_unavailable(bench, "render", "time the renderer (not built)");
+}
 
-}  // namespace firn::app
+}  // namespace firn

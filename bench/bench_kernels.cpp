@@ -8,8 +8,8 @@
 #include <chrono>
 #include <string>
 
-#include "engine/reference_problems.hpp"
 #include "kernels/backend/openmp.hpp"
+#include "studies/bench/reference_problems.hpp"
 
 namespace firn {
 namespace {
@@ -25,9 +25,7 @@ double launch_seconds(const backend::LaunchProfile& profile, const std::string& 
 }
 
 void BM_StepKernel(benchmark::State& state, const std::string& launch, const std::string& model) {
-  backend::OpenMP omp;
-  omp.thread_count = int(state.range(0));
-  Simulation<float, backend::OpenMP> sim(cube_drop_config(), omp);
+  Simulation<float, backend::OpenMP> sim(cube_drop_config(), backend::OpenMP(int(state.range(0))));
   const double dx = sim.config().dx;
   const int m = sim.add_material({"cube", model, 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
   sim.add_particles(m, fill_box(sim.config().domain_min, dx, 2, {0.4, 0.3, 0.4}, {0.4 + kSide, 0.3 + kSide, 0.4 + kSide}),

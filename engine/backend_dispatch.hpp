@@ -26,9 +26,7 @@ auto with_backend(BackendKind kind, int threads, Run&& run) {
     throw std::runtime_error(backend_unavailable(kind));
 #endif
   }
-  backend::OpenMP omp;
-  if (threads > 0) omp.thread_count = threads;
-  return run(omp);
+  return run(backend::OpenMP(threads));
 }
 
 }  // namespace firn

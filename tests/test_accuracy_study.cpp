@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "apps/study/accuracy_study.hpp"
+#include "studies/accuracy/accuracy_study.hpp"
 
 namespace firn::study {
 namespace {

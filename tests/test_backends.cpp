@@ -15,8 +15,7 @@
 namespace firn {
 
 TwoBodiesOutcome openmp_two_bodies(Transfer transfer, Shape shape) {
-  backend::OpenMP two;
-  two.thread_count = 2;
+  const backend::OpenMP two(2);
   return run_two_bodies(two, transfer, shape);
 }
 
@@ -26,9 +25,7 @@ class BackendsAgree : public ::testing::TestWithParam<std::tuple<Transfer, Shape
 
 TEST_P(BackendsAgree, BitwiseForAnyThreadCount) {
   const auto [transfer, shape] = GetParam();
-  backend::OpenMP one, two;
-  one.thread_count = 1;
-  two.thread_count = 2;
+  const backend::OpenMP one(1), two(2);
   const TwoBodiesOutcome a = run_two_bodies(one, transfer, shape), b = run_two_bodies(two, transfer, shape);
   EXPECT_EQ(a.hash, b.hash);
   const TwoBodiesOutcome serial = run_two_bodies(backend::Serial{}, transfer, shape);
@@ -57,8 +54,7 @@ TEST(ParallelReduce, SameResultOnEveryBackend) {
   auto term = [](std::size_t i, float& acc) { acc += 1.0f / float(i + 1); };
   auto sum = [](float& a, float b) { a += b; };
   const float serial = backend::Serial{}.parallel_reduce("sum", n, 0.0f, term, sum);
-  backend::OpenMP two;
-  two.thread_count = 2;
+  const backend::OpenMP two(2);
   EXPECT_EQ(two.parallel_reduce("sum", n, 0.0f, term, sum), serial);
   EXPECT_NEAR(serial, 12.09, 0.01);  // harmonic number H_n = ln n + 0.5772
 }

@@ -5,13 +5,11 @@
 // footprint, loads' ramps, plastic state and the energy budget.
 #include <gtest/gtest.h>
 
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "engine/conveyor.hpp"
-#include "engine/scene/scene_builder.hpp"
 #include "engine/scene/scene_reader.hpp"
+#include "engine/scene/scene_stepper.hpp"
 #include "kernels/backend/openmp.hpp"
 
 namespace firn {
@@ -23,39 +21,31 @@ SceneSpec scene(const std::string& file, std::vector<std::string> overrides) {
   return load_scene(std::string(FIRN_SOURCE_DIR) + "/scenes/" + file, o).spec;
 }
 
-// A simulation of the scene with its conveyor, stepped as firn run steps it.
+// A scene stepped as firn run steps it (engine/scene/scene_stepper.hpp), with its footprint and
+// energy budget on.
 struct SteppedScene {
-  Simulation<float, backend::OpenMP> sim;
-  std::optional<Conveyor> conveyor;
-  SteppedScene(const SceneSpec& s, int threads) : sim(s.config, omp(threads)) {
-    const BuiltScene built = build_scene(s, sim);
-    if (s.conveyor) conveyor.emplace(s, *s.conveyor);
-    if (built.tire >= 0) sim.enable_footprint(built.tire);
-    sim.enable_energy_budget();
-    sim.prepare();
-  }
+  SceneStepper<float, backend::OpenMP> stepper;
+  Simulation<float, backend::OpenMP>& sim;
+  SteppedScene(const SceneSpec& s, int threads) : stepper(s, backend::OpenMP(threads), measured()), sim(stepper.sim()) {}
   void steps(int n) {
-    for (int i = 0; i < n; ++i) {
-      if (conveyor) conveyor->update(sim, sim.time());
-      sim.step();
-    }
+    for (int i = 0; i < n; ++i) stepper.step_toward(1e9);
   }
   std::string save() {
     StateWriter out;
-    sim.save_state(out);
-    if (conveyor) conveyor->save_state(out);
+    stepper.save_state(out);
     return out.bytes();
   }
   void load(const std::string& bytes) {
     StateReader in(bytes);
-    sim.load_state(in);
-    if (conveyor) conveyor->load_state(in);
-    EXPECT_TRUE(in.at_end());
+    stepper.load_state(in);
   }
-  static backend::OpenMP omp(int threads) {
-    backend::OpenMP b;
-    b.thread_count = threads;
-    return b;
+  static SceneStepperOptions<float, backend::OpenMP> measured() {
+    SceneStepperOptions<float, backend::OpenMP> o;
+    o.before_prepare = [](Simulation<float, backend::OpenMP>& sim, const BuiltScene& built, const Conveyor*) {
+      if (built.tire >= 0) sim.enable_footprint(built.tire);
+      sim.enable_energy_budget();
+    };
+    return o;
   }
 };
 

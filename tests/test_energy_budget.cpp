@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/material_driver.hpp"
+#include "engine/verification/material_driver.hpp"
 #include "engine/materials.hpp"
 #include "engine/particle_fill.hpp"
 #include "engine/simulation.hpp"

@@ -11,9 +11,9 @@
 #include <sstream>
 #include <string>
 
-#include "apps/sweep/metrics_history.hpp"
 #include "engine/scene/scene_run.hpp"
 #include "kernels/friction.hpp"
+#include "studies/sweep/metrics_history.hpp"
 
 namespace firn {
 namespace {

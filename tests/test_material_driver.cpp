@@ -1,12 +1,12 @@
-// The material-point driver (engine/material_driver.hpp) and the material catalog entries of the
-// thesis models: presets carry the thesis' tables, the factory builds each model, the driver composes
-// increments exactly and solves uniaxial stress.
+// The material-point driver (engine/verification/material_driver.hpp) and the material catalog
+// entries of the thesis models: presets carry the thesis' tables, the factory builds each model, the
+// driver composes increments exactly and solves uniaxial stress.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "engine/material_catalog.hpp"
-#include "engine/material_driver.hpp"
+#include "engine/verification/material_driver.hpp"
 
 namespace firn {
 namespace {

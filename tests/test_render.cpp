@@ -18,11 +18,11 @@
 #define STB_IMAGE_STATIC
 #include <stb/stb_image.h>
 
-#include "apps/sweep/child_process.hpp"
 #include "engine/output/vtp_writer.hpp"
 #include "engine/particle_storage.hpp"
 #include "engine/scene/scene_builder.hpp"
 #include "kernels/backend/serial.hpp"
+#include "studies/sweep/child_process.hpp"
 #include "viz/collider_sdf.hpp"
 #include "viz/color_map.hpp"
 #include "viz/exposed_particles.hpp"

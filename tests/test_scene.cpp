@@ -9,7 +9,7 @@
 
 #include "engine/scene/scene_builder.hpp"
 #include "engine/scene/scene_reader.hpp"
-#include "engine/units.hpp"
+#include "engine/scene/units.hpp"
 #include "kernels/backend/serial.hpp"
 
 namespace firn {

@@ -2,8 +2,8 @@
 // blocks, takes the same steps to the same state, and its grid storage grows only by the block map.
 #include <gtest/gtest.h>
 
-#include "engine/reference_problems.hpp"
 #include "kernels/backend/serial.hpp"
+#include "studies/bench/reference_problems.hpp"
 
 namespace firn {
 namespace {

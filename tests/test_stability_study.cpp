@@ -1,6 +1,6 @@
-// firn study stability's parts (apps/study/): the bisection, the pressure checkerboard indicator,
-// the random scene generator, the NaN scan of run outputs, and a small end-to-end subset whose
-// bounds guard the engine's stability (a change that loses stability fails here).
+// firn study stability's parts (studies/stability/): the bisection, the pressure checkerboard
+// indicator, the random scene generator, the NaN scan of run outputs, and a small end-to-end subset
+// whose bounds guard the engine's stability (a change that loses stability fails here).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -10,17 +10,17 @@
 #include <limits>
 #include <string>
 
-#include "apps/study/stability_bisection.hpp"
-#include "apps/study/stability_cfl.hpp"
-#include "apps/study/stability_checkerboard.hpp"
-#include "apps/study/stability_long_run.hpp"
-#include "apps/study/stability_output_scan.hpp"
-#include "apps/study/stability_random_runs.hpp"
-#include "apps/study/stability_random_scene.hpp"
-#include "apps/study/stability_scenes.hpp"
 #include "engine/output/atomic_file.hpp"
 #include "engine/output/vtp_writer.hpp"
 #include "engine/scene/scene_run.hpp"
+#include "studies/stability/stability_bisection.hpp"
+#include "studies/stability/stability_cfl.hpp"
+#include "studies/stability/stability_checkerboard.hpp"
+#include "studies/stability/stability_long_run.hpp"
+#include "studies/stability/stability_output_scan.hpp"
+#include "studies/stability/stability_random_runs.hpp"
+#include "studies/stability/stability_random_scene.hpp"
+#include "studies/stability/stability_scenes.hpp"
 
 namespace firn::study {
 namespace {

@@ -91,9 +91,7 @@ TEST(SurfaceField, SameMeshForEveryThreadCount) {
   SurfaceParams params;
   params.simulation_dx = 0.02;
   auto surface_with = [&](int threads) {
-    backend::OpenMP omp;
-    omp.thread_count = threads;
-    return reconstruct_surface(particles.view(), params, omp);
+    return reconstruct_surface(particles.view(), params, backend::OpenMP(threads));
   };
   const SurfaceMesh one = surface_with(1);
   for (int threads : {2, 3}) {

@@ -1,4 +1,4 @@
-// firn sweep's engine-free parts (apps/sweep/): value lists, the Cartesian product, run names,
+// firn sweep's engine-free parts (studies/sweep/): value lists, the Cartesian product, run names,
 // metrics.csv read back, summary.json fields, sweep.csv assembly and the gnuplot files.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -11,14 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "apps/sweep/child_process.hpp"
-#include "apps/sweep/combinations.hpp"
-#include "apps/sweep/csv.hpp"
-#include "apps/sweep/metric_plot.hpp"
-#include "apps/sweep/metrics_history.hpp"
-#include "apps/sweep/run_record.hpp"
-#include "apps/sweep/sweep_table.hpp"
-#include "apps/sweep/value_list.hpp"
+#include "studies/sweep/child_process.hpp"
+#include "studies/sweep/combinations.hpp"
+#include "studies/sweep/csv.hpp"
+#include "studies/sweep/metric_plot.hpp"
+#include "studies/sweep/metrics_history.hpp"
+#include "studies/sweep/run_record.hpp"
+#include "studies/sweep/sweep_table.hpp"
+#include "studies/sweep/value_list.hpp"
 
 namespace firn::sweep {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "engine/collider_body.hpp"
-#include "engine/conveyor.hpp"
+#include "engine/scene/conveyor.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/scene/scene_reader.hpp"
 #include "engine/simulation.hpp"

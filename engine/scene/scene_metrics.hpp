@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/conveyor.hpp"
+#include "engine/scene/conveyor.hpp"
 #include "engine/output/footprint_writer.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/scene/scene_builder.hpp"

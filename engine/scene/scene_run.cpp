@@ -12,9 +12,7 @@ RunSummary run_scene(const LoadedScene& scene, const RunOptions& options) {
     case BackendKind::cuda: return run_scene_cuda(scene, options);
     case BackendKind::openmp: break;
   }
-  backend::OpenMP omp;
-  if (options.threads > 0) omp.thread_count = options.threads;
-  return scene_run_detail::run_on(scene, options, omp);
+  return scene_run_detail::run_on(scene, options, backend::OpenMP(options.threads));
 }
 
 }  // namespace firn

@@ -13,9 +13,9 @@
 #include "engine/output/atomic_file.hpp"
 #include "engine/output/vtp_writer.hpp"
 #include "engine/scene/checkpoint.hpp"
-#include "engine/scene/scene_builder.hpp"
 #include "engine/scene/scene_metrics.hpp"
 #include "engine/scene/scene_run.hpp"
+#include "engine/scene/scene_stepper.hpp"
 
 namespace firn {
 namespace scene_run_detail {
@@ -49,15 +49,16 @@ template <class T, class Backend>
 RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backend& backend) {
   const auto wall0 = Clock::now();
   const SceneSpec& scene = loaded.spec;
-  Simulation<T, Backend> sim(scene.config, backend);
-  if (options.rest_positions) sim.enable(Attribute::x0);
-  const BuiltScene built = build_scene(scene, sim);
-  std::optional<Conveyor> conveyor;
-  if (scene.conveyor) conveyor.emplace(scene, *scene.conveyor);
-  SceneMetrics<T, Backend> scene_metrics(scene, built, conveyor ? &*conveyor : nullptr);
-  scene_metrics.prepare(sim);
-  sim.enable_energy_budget();
-  sim.prepare();
+  std::optional<SceneMetrics<T, Backend>> scene_metrics;
+  SceneStepperOptions<T, Backend> stepper_options;
+  stepper_options.rest_positions = options.rest_positions;
+  stepper_options.before_prepare = [&](Simulation<T, Backend>& sim, const BuiltScene& built, const Conveyor* conveyor) {
+    scene_metrics.emplace(scene, built, conveyor);
+    scene_metrics->prepare(sim);
+    sim.enable_energy_budget();
+  };
+  SceneStepper<T, Backend> stepper(scene, backend, stepper_options);
+  Simulation<T, Backend>& sim = stepper.sim();
 
   RunSummary summary;
   summary.particles = sim.particle_count();
@@ -74,9 +75,11 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
     const std::string path = checkpoint_path(options.out_dir);
     progress = read_checkpoint(path, resolved_toml);
     StateReader in(progress.engine_state);
-    sim.load_state(in);
-    if (conveyor) conveyor->load_state(in);
-    StateReader::expect(in.at_end(), path + ": checkpoint's conveyor differs from the scene's");
+    try {
+      stepper.load_state(in);
+    } catch (const CheckpointError& e) {
+      throw CheckpointError(path + ": " + e.what());
+    }
     StateReader::expect(!options.rest_positions || sim.has(Attribute::x0),
                         path + ": the run kept no rest positions, which --render surface and --mesh need; "
                                "resume without them");
@@ -85,10 +88,10 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
     progress.metrics =
         "frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,max_speed,min_J,"
         "plastic_work,gravity_work,collider_work,load_work,energy_residual" +
-        scene_metrics.header() + "\n";
+        scene_metrics->header() + "\n";
   }
   make_directories(options.out_dir + "/particles");
-  if (scene_metrics.writes_footprint()) make_directories(options.out_dir + "/footprint");
+  if (scene_metrics->writes_footprint()) make_directories(options.out_dir + "/footprint");
   if (!options.resume) write_file_atomically(options.out_dir + "/scene.resolved.toml", resolved_toml);
   double step_seconds = progress.step_seconds;
 
@@ -104,7 +107,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
                   sim.steps(), sim.time(), sim.last_dt(), sim.particle_count(), d.kinetic_energy, d.elastic_energy,
                   d.momentum[0], d.momentum[1], d.momentum[2], d.max_speed, d.min_J, b.plastic, b.gravity, b.colliders,
                   b.loads, residual);
-    progress.metrics += row + scene_metrics.row(sim, options.out_dir + "/footprint/" + frame_name(frame)) + "\n";
+    progress.metrics += row + scene_metrics->row(sim, options.out_dir + "/footprint/" + frame_name(frame)) + "\n";
     write_particles_vtp(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
     write_file_atomically(options.out_dir + "/metrics.csv", progress.metrics);
     if (options.on_frame) {
@@ -120,8 +123,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
     progress.particle_steps = summary.particle_steps;
     progress.step_seconds = step_seconds;
     StateWriter out;
-    sim.save_state(out);
-    if (conveyor) conveyor->save_state(out);
+    stepper.save_state(out);
     progress.engine_state = out.bytes();
   };
   auto write_checkpoint_now = [&] { write_checkpoint(checkpoint_path(options.out_dir), resolved_toml, progress); };
@@ -130,13 +132,12 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
   const double every = options.checkpoint_every;
   double next_checkpoint = every > 0 ? every * std::floor(sim.time() / every + 1 + 1e-9) : 0;
   bool captured_unwritten = false;  // progress holds a frame's state that is not on disk yet
-  int f = progress.next_frame;
   try {
     if (options.resume) write_file_atomically(options.out_dir + "/metrics.csv", progress.metrics);
     else write_frame(0);
-    for (; f <= frames; ++f) {
+    for (int f = progress.next_frame; f <= frames; ++f) {
       const double target = std::min(scene.end_time, f * scene.frame_interval);
-      while (sim.time() < target * (1 - 1e-12)) {
+      while (stepper.before(target)) {
         if (options.interrupt && options.interrupt->load()) {
           capture(f);
           write_checkpoint_now();
@@ -144,8 +145,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
           throw std::runtime_error("interrupted");
         }
         const auto t0 = Clock::now();
-        if (conveyor) conveyor->update(sim, sim.time());
-        sim.step(std::min(sim.next_dt(), target - sim.time()));
+        stepper.step_toward(target);
         step_seconds += seconds_since(t0);
         summary.particle_steps += double(sim.particle_count());
         if (options.progress) options.progress({sim.time(), scene.end_time, sim.steps(), f, frames, step_seconds});

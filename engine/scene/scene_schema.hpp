@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/units.hpp"
+#include "engine/scene/units.hpp"
 
 namespace firn {
 

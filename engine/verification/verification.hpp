@@ -94,7 +94,7 @@ std::vector<VerificationRow> verify_incline_rolling_fine(const VerificationOptio
 // The rolling run alone at R / dx = 10 * 2^level; error |a / (2/3 g sin theta) - 1|.
 VerificationCase incline_rolling_case(int level, const VerificationMethod& method, const VerificationOptions& options);
 
-// Material-point driver (engine/material_driver.hpp) for one constitutive model ("hyperelastic_plastic",
+// Material-point driver (material_driver.hpp) for one constitutive model ("hyperelastic_plastic",
 // "snow_stomakhin", "mooney_rivlin"): closed forms, yield surface and J_P bookkeeping after every
 // return, sub-stepped references, objectivity. One row per check.
 std::vector<VerificationRow> verify_material_driver(const std::string& model);

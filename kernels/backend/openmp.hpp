@@ -25,6 +25,10 @@ struct OpenMP {
   int thread_count = omp_get_max_threads();
   LaunchProfile* profile = nullptr;
 
+  OpenMP() = default;
+  // `threads` threads; 0 or less: all cores (the default above).
+  explicit OpenMP(int threads) : thread_count(threads > 0 ? threads : omp_get_max_threads()) {}
+
   int threads() const { return thread_count; }
 
   template <class F>

@@ -34,9 +34,9 @@ struct MergeConstitutive {
   }
 };
 
-// The return mapping of a plastic model, here and in the material driver (engine/material_driver.cpp);
-// when `work` is not null, the model's plastic work density of the return is added to *work.
-// Returns whether F changed.
+// The return mapping of a plastic model, here and in the material driver
+// (engine/verification/material_driver.cpp); when `work` is not null, the model's plastic work
+// density of the return is added to *work. Returns whether F changed.
 template <class T, class Model>
 FIRN_HD bool project_measuring_work(const Model& model, Mat3<T>& F, PlasticState<T>& state, T* work) {
   const Mat3<T> F_trial = F;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "engine/scene/scene_reader.hpp"
-#include "engine/units.hpp"
+#include "engine/scene/units.hpp"
 
 namespace firn::fuzz {
 namespace {

@@ -1,0 +1,276 @@
+// Material-point driver problems (DESIGN.md section 6, problem 5): each constitutive model with the
+// thesis' parameters (material_catalog.cpp presets) along homogeneous paths (material_driver.hpp).
+// Every row is one check; its error and bound are stated beside it. Rows carry level 0, dx 0,
+// one particle and the number of increments as steps.
+#include "engine/verification/material_driver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+#include "engine/material_catalog.hpp"
+#include "engine/verification/verification.hpp"
+#include "kernels/svd3.hpp"
+
+namespace firn {
+namespace {
+
+MaterialInfo preset_material(const std::string& name, std::map<std::string, double> overrides = {}) {
+  const MaterialPreset* preset = find_material_preset(name);
+  if (!preset) throw std::logic_error("no material preset '" + name + "'");
+  std::map<std::string, double> v = preset->values;
+  for (const auto& [k, x] : overrides) v[k] = x;
+  const auto get = [&](const char* key) -> std::optional<double> {
+    const auto it = v.find(key);
+    return it == v.end() ? std::nullopt : std::optional<double>(it->second);
+  };
+  MaterialInfo info{
+      name, preset->model, v.at("density"), ElasticModuli::from_any_two(get("E"), get("nu"), get("K"), get("G")), {}};
+  for (const auto& [k, x] : v)
+    if (k != "density" && k != "E" && k != "nu" && k != "K" && k != "G") info.params[k] = x;
+  return info;
+}
+
+double max_abs(const Mat3<double>& a) {
+  double m = 0;
+  for (double x : a.m) m = std::max(m, std::abs(x));
+  return m;
+}
+
+double dev_norm(const Mat3<double>& a) {
+  Mat3<double> d = a;
+  for (int i = 0; i < 3; ++i) d(i, i) -= trace(a) / 3;
+  return std::sqrt(ddot(d, d));
+}
+
+// Times one check and appends its row.
+struct Rows {
+  std::string problem;
+  std::vector<VerificationRow> rows;
+  void add(const std::string& check, long increments, double bound, const std::function<double()>& error) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double e = error();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    rows.push_back({problem + ":" + check, 0, 0, 1, increments, e, bound, seconds});
+  }
+};
+
+// tau(F = I) relative to the P-wave modulus: zero up to rounding (of the polar rotation for Stomakhin).
+double zero_stress_error(const MaterialModel<double>& model) {
+  return std::visit(
+      [](const auto& m) {
+        PlasticState<double> s;
+        return max_abs(m.kirchhoff(Mat3<double>::identity(), s)) / m.p_wave_modulus(s);
+      },
+      model);
+}
+
+// Objectivity: a superposed rotation Q(t) (a full turn about a skew axis) must give Q tau Q^T and
+// the same plastic state. Error: largest deviation relative to the largest stress, and of the state.
+double objectivity_error(const MaterialModel<double>& model, const DeformationPath& path, int increments) {
+  const Vec3<double> axis = {{1, -2, 0.5}};
+  const double angle = 2 * M_PI;
+  const DriverHistory a = drive_material(model, path, increments);
+  const DriverHistory b = drive_material(model, paths::rotated(path, axis, angle), increments);
+  double scale = 0;
+  for (const auto& t : a.tau) scale = std::max(scale, max_abs(t));
+  double e = 0;
+  for (int k = 0; k <= increments; ++k) {
+    const Mat3<double> Q = axis_angle_rotation(axis, angle * k / increments);
+    e = std::max(e, max_abs(b.tau[k] - mul_transposed(Q * a.tau[k], Q)) / scale);
+    e = std::max(e, std::abs(b.state[k].alpha - a.state[k].alpha) / std::max(a.state.back().alpha, 1e-300));
+    e = std::max(e, std::abs(b.state[k].Jp - a.state[k].Jp));
+  }
+  return e;
+}
+
+// Deviation of the final stress and state of an N-increment run from a 100 N reference, relative.
+double substep_error(const MaterialModel<double>& model, const DeformationPath& path, int increments) {
+  const DriverHistory coarse = drive_material(model, path, increments);
+  const DriverHistory fine = drive_material(model, path, 100 * increments);
+  const double e_tau = max_abs(coarse.tau.back() - fine.tau.back()) / max_abs(fine.tau.back());
+  const double e_alpha = fine.state.back().alpha > 0
+                             ? std::abs(coarse.state.back().alpha - fine.state.back().alpha) / fine.state.back().alpha
+                             : 0;
+  return std::max({e_tau, e_alpha, std::abs(coarse.state.back().Jp - fine.state.back().Jp)});
+}
+
+std::vector<VerificationRow> verify_hyperelastic_plastic() {
+  Rows r{"material_driver_hyperelastic_plastic", {}};
+  const MaterialInfo shell = preset_material("thesis_shell");
+  const MaterialModel<double> model = make_material_model<double>(shell);
+  const HyperelasticPlastic<double>& hp = std::get<HyperelasticPlastic<double>>(model);
+  const double K = shell.moduli.K, G = shell.moduli.G;
+
+  r.add("zero_stress", 0, 1e-14, [&] { return zero_stress_error(model); });
+
+  // Pure volume change has no deviatoric stress, so it stays elastic down to J = 0.3 and back:
+  // tau = K/2 (J^2 - 1) I (thesis Eq. 4.2) in closed form; any alpha is an error too. Bound: rounding.
+  r.add("hydrostatic_closed_form", 200, 1e-12, [&] {
+    const DriverHistory h = drive_material(model, paths::hydrostatic_cycle(0.3), 200);
+    double e = 0;
+    for (std::size_t k = 0; k < h.tau.size(); ++k) {
+      const double J = determinant(h.F[k]);
+      e = std::max({e, max_abs(h.tau[k] - (K / 2 * (J * J - 1)) * Mat3<double>::identity()) / K, h.state[k].alpha});
+    }
+    return e;
+  });
+
+  // Linear hardening in uniaxial strain eps, small strain: trial ||s|| = 2G sqrt(2/3) eps along the fixed
+  // direction n = sqrt(2/3)(1, -1/2, -1/2), and the return 2G sqrt(2/3) eps - 2G dgamma = sqrt(2/3)(sigma_y0
+  // + E_p alpha), alpha = sqrt(2/3) dgamma, give alpha = (2G eps - sigma_y0) / (3G + E_p) (also the axial
+  // plastic strain). The model is finite-strain (dev of bbar_e, mu_bar = G tr(bbar_e)/3), which departs
+  // from this at relative order eps / (eps - eps_y): bound 4 eps_end / (eps_end - eps_y) = 6 eps_end at
+  // eps_end = 3 eps_y, eps_y = sigma_y0 / (2G).
+  const double E_p = 0.1 * G, sigma_y0 = 100, eps_y = sigma_y0 / (2 * G), eps_end = 3 * eps_y;
+  const MaterialModel<double> linear =
+      make_material_model<double>(preset_material("thesis_shell", {{"hardening", 0}, {"E_p", E_p}}));
+  r.add("linear_hardening_uniaxial_strain", 60, 6 * eps_end, [&] {
+    const DriverHistory h = drive_material(linear, paths::uniaxial_strain(eps_end), 60);
+    const double alpha_end = (2 * G * eps_end - sigma_y0) / (3 * G + E_p);
+    double e = 0;
+    for (std::size_t k = 0; k < h.F.size(); ++k) {
+      const double eps = h.F[k](0, 0) - 1;
+      const double exact = std::max(0.0, (2 * G * eps - sigma_y0) / (3 * G + E_p));
+      e = std::max(e, std::abs(h.state[k].alpha - exact) / alpha_end);
+    }
+    return e;
+  });
+
+  // Yield surface after every return, on compaction to J = 0.3 with shear, simple shear and cyclic
+  // loading: f = ||dev tau|| - sqrt(2/3) sigma_y(alpha) recomputed from the returned F_E, relative to
+  // sqrt(2/3) sigma_y0; and det F_E = det F (isochoric flow). Bound: rounding (1e-10).
+  r.add("yield_surface_and_volume", 3 * 400, 1e-10, [&] {
+    double e = 0;
+    for (const DeformationPath& path :
+         {paths::compress_and_shear(0.3, 2.0), paths::simple_shear(1.0), paths::cyclic_uniaxial_strain(0.05, 3)}) {
+      const DriverHistory h = drive_material(model, path, 400);
+      for (std::size_t k = 0; k < h.F.size(); ++k) {
+        const double f = dev_norm(h.tau[k]) - std::sqrt(2.0 / 3) * hp.hardening.yield_stress(h.state[k].alpha);
+        e = std::max(e, f / (std::sqrt(2.0 / 3) * hp.hardening.sigma_y0));
+        e = std::max(e, std::abs(determinant(h.F_E[k]) / determinant(h.F[k]) - 1));
+      }
+    }
+    return e;
+  });
+
+  // Backward-Euler return: first order in the increment. Compaction to J = 0.3 with shear 2 in 40
+  // increments against 4000; measured 4.3e-4, bound 1e-2.
+  r.add("substep_compress_and_shear", 40, 1e-2,
+        [&] { return substep_error(model, paths::compress_and_shear(0.3, 2.0), 40); });
+
+  r.add("objectivity", 400, 1e-10, [&] { return objectivity_error(model, paths::compress_and_shear(0.3, 2.0), 400); });
+  return r.rows;
+}
+
+std::vector<VerificationRow> verify_snow_stomakhin() {
+  Rows r{"material_driver_snow_stomakhin", {}};
+  const MaterialInfo snow = preset_material("thesis_stomakhin_snow");
+  const MaterialModel<double> model = make_material_model<double>(snow);
+  const SnowStomakhin<double>& sm = std::get<SnowStomakhin<double>>(model);
+
+  r.add("zero_stress", 0, 1e-14, [&] { return zero_stress_error(model); });
+
+  // Uniaxial compression F = diag(a, 1, 1) to a = 0.8 in closed form (Stomakhin et al. 2013): below
+  // a = 1 - theta_c, F_E = diag(1 - theta_c, 1, 1) and J_P = a / (1 - theta_c); the fixed-corotated
+  // stress of a diagonal F_E is tau_ii = 2 mu h (s_i - 1) s_i + lambda h (J_E - 1) J_E, h = e^(xi (1 - J_P)).
+  // Error relative to the largest stress; bound: rounding.
+  r.add("uniaxial_compression_closed_form", 40, 1e-12, [&] {
+    const DriverHistory h = drive_material(model, paths::uniaxial_strain(-0.2), 40);
+    double scale = 0;
+    for (const auto& t : h.tau) scale = std::max(scale, max_abs(t));
+    double e = 0;
+    for (std::size_t k = 0; k < h.F.size(); ++k) {
+      const double a = h.F[k](0, 0), s0 = std::max(a, 1 - sm.theta_c), Jp = a / s0;
+      const double f = std::exp(sm.xi * (1 - Jp));
+      const double s[3] = {s0, 1, 1};
+      for (int i = 0; i < 3; ++i) {
+        const double exact = 2 * sm.mu * f * (s[i] - 1) * s[i] + sm.lambda * f * (s0 - 1) * s0;
+        e = std::max(e, std::abs(h.tau[k](i, i) - exact) / scale);
+      }
+      e = std::max(e, std::abs(h.state[k].Jp - Jp));
+    }
+    return e;
+  });
+
+  // Bookkeeping and clamp after every return, on compaction to J = 0.3 and back, compaction with shear,
+  // cyclic loading: det(F_E) J_P = det F, and the singular values of F_E within [1 - theta_c, 1 + theta_s].
+  // Relative error; bound: rounding.
+  r.add("clamp_and_Jp_bookkeeping", 3 * 400, 1e-12, [&] {
+    double e = 0;
+    for (const DeformationPath& path :
+         {paths::hydrostatic_cycle(0.3), paths::compress_and_shear(0.3, 2.0), paths::cyclic_uniaxial_strain(0.05, 3)}) {
+      const DriverHistory h = drive_material(model, path, 400);
+      for (std::size_t k = 0; k < h.F.size(); ++k) {
+        e = std::max(e, std::abs(determinant(h.F_E[k]) * h.state[k].Jp / determinant(h.F[k]) - 1));
+        Mat3<double> U, V;
+        Vec3<double> s;
+        svd3(h.F_E[k], U, s, V);
+        for (int d = 0; d < 3; ++d) e = std::max({e, (1 - sm.theta_c) - s[d], s[d] - (1 + sm.theta_s)});
+      }
+    }
+    return e;
+  });
+
+  // The clamp is applied once per increment, so a coarse path differs from a fine one; compaction with
+  // shear in 40 increments against 4000: measured 5.2e-3, bound 2e-2.
+  r.add("substep_compress_and_shear", 40, 2e-2,
+        [&] { return substep_error(model, paths::compress_and_shear(0.5, 1.0), 40); });
+
+  r.add("objectivity", 400, 1e-10, [&] { return objectivity_error(model, paths::compress_and_shear(0.3, 2.0), 400); });
+  return r.rows;
+}
+
+std::vector<VerificationRow> verify_mooney_rivlin() {
+  Rows r{"material_driver_mooney_rivlin", {}};
+  // Thesis tire rubber with a third of the shear modulus in the G2 term, so that both terms are tested.
+  const MaterialInfo rubber_info = preset_material("thesis_tire_rubber");
+  const MaterialInfo rubber = preset_material("thesis_tire_rubber", {{"G2", rubber_info.moduli.G / 3}});
+  const MaterialModel<double> model = make_material_model<double>(rubber);
+  const MooneyRivlin<double>& mr = std::get<MooneyRivlin<double>>(model);
+
+  r.add("zero_stress", 0, 1e-14, [&] { return zero_stress_error(model); });
+
+  // Uniaxial stress at strain 1e-5: tau_xx / eps must be Young's modulus E and the lateral strain
+  // -nu eps (linearised Mooney-Rivlin, shear modulus G1 + G2 = G). Relative error O(eps) / (1 - 2 nu):
+  // bound 1e-3.
+  r.add("uniaxial_stress_small_strain", 10, 1e-3, [&] {
+    const double eps = 1e-5;
+    const DriverHistory h = drive_uniaxial_stress(model, eps, 10);
+    const double E = rubber.moduli.E, nu = rubber.moduli.nu;
+    const double e_E = std::abs(h.tau.back()(0, 0) / eps / E - 1);
+    const double e_nu = std::abs(-(h.F.back()(1, 1) - 1) / eps / nu - 1);
+    const double e_lateral = std::abs(h.tau.back()(1, 1) / h.tau.back()(0, 0));
+    return std::max({e_E, e_nu, e_lateral});
+  });
+
+  // Work = stored energy along compaction to J = 0.8 with shear 1: the midpoint-rule sum of
+  // tau : sym(dF F_mid^{-1}) over 2000 increments against W(F_end), second order: relative error
+  // about 1 / N^2 = 2.5e-7, bound 1e-5.
+  r.add("work_equals_energy", 2000, 1e-5, [&] {
+    const DriverHistory h = drive_material(model, paths::compress_and_shear(0.8, 1.0), 2000);
+    double work = 0;
+    for (std::size_t k = 1; k < h.F.size(); ++k) {
+      const Mat3<double> L = (h.F[k] - h.F[k - 1]) * inverse(0.5 * (h.F[k] + h.F[k - 1]));
+      work += ddot(0.5 * (h.tau[k] + h.tau[k - 1]), L);  // tau symmetric: tau : L = tau : sym(L)
+    }
+    const double W = mr.energy_density(h.F.back());
+    return std::abs(work - W) / W;
+  });
+
+  r.add("objectivity", 400, 1e-10, [&] { return objectivity_error(model, paths::compress_and_shear(0.8, 1.0), 400); });
+  return r.rows;
+}
+
+}  // namespace
+
+std::vector<VerificationRow> verify_material_driver(const std::string& model) {
+  if (model == "hyperelastic_plastic") return verify_hyperelastic_plastic();
+  if (model == "snow_stomakhin") return verify_snow_stomakhin();
+  if (model == "mooney_rivlin") return verify_mooney_rivlin();
+  throw std::invalid_argument("no material driver problem for model '" + model + "'");
+}
+
+}  // namespace firn

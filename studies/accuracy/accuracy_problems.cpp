@@ -1,0 +1,42 @@
+#include "studies/accuracy/accuracy_problems.hpp"
+
+namespace firn::study {
+
+const std::vector<AccuracyProblem>& accuracy_problems() {
+  static const std::vector<AccuracyProblem> problems = {
+      {"vibrating_bar", "largest free-end displacement error over one period / amplitude", 1,
+       "first order: the fixed end carries the largest stress and its nodes miss the particles beyond the boundary "
+       "(engine/verification/vibrating_bar.cpp)",
+       {0, 1, 2, 3}, {0, 1}, vibrating_bar_case},
+      {"manufactured_solution", "largest RMS displacement error / amplitude", 2,
+       "second order: quadratic and cubic B-splines with particles per cell refined along with dx "
+       "(Wallstedt and Guilkey 2008; the sin^4 solution keeps boundary errors out)",
+       {0, 1, 2, 3}, {0, 1, 2}, manufactured_solution_case},
+      {"two_spheres", "relative loss of total (kinetic + elastic) energy after the elastic collision", 0,
+       "no order is stated: the loss is the transfer's numerical dissipation, large for PIC and small for APIC "
+       "(Jiang et al. 2015) and FLIP",
+       {0, 1, 2}, {0, 1},
+       [](int level, const VerificationMethod& m, const VerificationOptions& o) {
+         return two_spheres_case(level, m, o).run;
+       }},
+      {"incline_sliding", "|a / (g (sin t - mu cos t)) - 1| of the block's acceleration", 0,
+       "none: contact nodes that stick (|v_t| < mu |v_n|) set a floor near 0.13% "
+       "(engine/verification/incline_sliding.cpp)",
+       {0, 1, 2}, {0, 1}, incline_sliding_case},
+      {"incline_rolling", "|a / (2/3 g sin t) - 1| of the rolling cylinder's acceleration", 0,
+       "none: the grid contact's patch puts the normal force ahead of the lowest point, a rolling resistance that "
+       "shrinks slowly and changes sign (engine/verification/incline_rolling.cpp)",
+       {0, 1}, {0}, incline_rolling_case},
+  };
+  return problems;
+}
+
+std::vector<VerificationMethod> all_methods() {
+  std::vector<VerificationMethod> methods;
+  for (const Transfer t : {Transfer::apic, Transfer::pic, Transfer::flip})
+    for (const Shape s : {Shape::quadratic, Shape::cubic})
+      for (const Precision p : {Precision::double_, Precision::single}) methods.push_back({t, s, p});
+  return methods;
+}
+
+}  // namespace firn::study

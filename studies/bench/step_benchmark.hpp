@@ -1,0 +1,40 @@
+// firn bench step: the step loop alone (setup excluded) timed on a reference problem
+// (reference_problems.hpp), on any backend, with the state it ends in. Options that add what the
+// problem does not need (a larger domain, attributes nobody reads, materials without particles)
+// measure what skipping them saves (docs/performance.md).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/backend_kind.hpp"
+
+namespace firn::bench {
+
+struct StepBenchmarkOptions {
+  std::string problem = "cube_drop";
+  int steps = 100;
+  BackendKind backend = BackendKind::openmp;  // available here (backend_unavailable)
+  int threads = 0;                            // OpenMP threads, 0: all cores
+  std::string precision = "float";
+  std::string transfer = "apic";
+  double domain_scale = 1;
+  std::vector<std::string> enable;  // on_demand attributes to allocate although nothing reads them
+  int idle_materials = 0;           // extra materials with no particles
+};
+
+struct StepBenchmarkResult {
+  std::string backend;  // its name
+  int threads = 0;
+  std::size_t particles = 0, bytes_per_particle = 0;
+  double seconds = 0;  // the timed steps
+  std::size_t grid_blocks_active = 0, grid_memory_bytes = 0;
+  double particle_steps_per_second = 0;
+  std::uint64_t state_hash = 0;
+};
+
+StepBenchmarkResult benchmark_step(const StepBenchmarkOptions& o);
+
+}  // namespace firn::bench
