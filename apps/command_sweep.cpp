@@ -1,7 +1,8 @@
 // firn sweep SCENE --vary KEY=V1,V2[,...]... [--set KEY=VALUE]... [--out DIR] [--preview] [--jobs N]
 //                  [--at T1,T2,...] [--backend serial|openmp|cuda] [--plot C1,C2,...]
-//                  [--scheduler local|slurm] [--sbatch OPTION]...
+//                  [--scheduler local|slurm] [--sbatch OPTION]... [--checkpoint-every TIME]
 // firn sweep --collect DIR [--plot C1,C2,...]
+// firn sweep --resume DIR [--jobs N] [--backend B]
 // Runs every combination of the --vary values (their Cartesian product) as a child `firn run`, N at
 // a time, and writes DIR/sweep.csv (one row per finished run, rewritten after each) and gnuplot
 // PNG plots of scene metrics against time under DIR/plots/ (--plot, or displaced, accumulated and
@@ -10,6 +11,8 @@
 // With --scheduler slurm the runs are not started here: DIR/slurm/sweep.sbatch, a Slurm job array
 // of one task per combination, is submitted with sbatch, and `firn sweep --collect DIR` later reads
 // the finished runs (the sweep's options are kept in DIR/sweep.args) into sweep.csv and the plots.
+// --resume DIR continues an interrupted local sweep from DIR/sweep.args: finished runs are kept,
+// interrupted ones resume from their checkpoints (firn run --resume), the rest run.
 // Exit status: 0 every run ok (slurm: submitted), 1 some run not ok or not finished (slurm: sbatch
 // failed), 2 bad scene or options, 130 interrupted.
 #include <cstdio>
@@ -41,7 +44,7 @@ int collect(const std::string& dir, const std::string& plot) {
 
 void add_sweep_command(CLI::App& app) {
   struct Options : sweep::SweepOptions {
-    std::string scheduler = "local", collect;
+    std::string scheduler = "local", collect, resume_dir;
   };
   auto o = std::make_shared<Options>();
   CLI::App* sweep = app.add_subcommand("sweep", "run every combination of scene values; one row per run in sweep.csv");
@@ -66,13 +69,32 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("--sbatch", o->sbatch, "an sbatch option for the job array, e.g. --sbatch=--partition=debug (repeatable)")
       ->allow_extra_args(false);
   sweep->add_option("--collect", o->collect, "gather the finished runs of the sweep in DIR into sweep.csv and plots");
+  sweep->add_option("--resume", o->resume_dir,
+                    "continue the sweep in DIR: keep its finished runs, resume the interrupted ones, run the rest");
+  sweep->add_option("--checkpoint-every", o->checkpoint_every,
+                    "each run's firn run --checkpoint-every (e.g. 50ms), so that a killed sweep resumes its runs");
   sweep->callback([o]() {
-    const bool defines_runs = !o->scene.empty() || !o->varies.empty() || !o->sets.empty() || o->preview || !o->at.empty();
-    if (o->collect.empty() ? (o->scene.empty() || o->varies.empty()) : defines_runs) {
-      std::fprintf(stderr, "firn sweep: %s\n", o->collect.empty()
-                                                   ? "give a scene and at least one --vary, or --collect DIR"
-                                                   : "--collect DIR reads the sweep's scene and values from DIR/sweep.args; "
-                                                     "give no scene, --vary, --set, --at or --preview with it");
+    const bool defines_runs = !o->scene.empty() || !o->varies.empty() || !o->sets.empty() || o->preview ||
+                              !o->at.empty() || !o->checkpoint_every.empty();
+    const std::string reads_args = !o->collect.empty() ? "--collect" : !o->resume_dir.empty() ? "--resume" : "";
+    if (!o->collect.empty() && !o->resume_dir.empty()) {
+      std::fprintf(stderr, "firn sweep: give --collect DIR or --resume DIR, not both\n");
+      set_exit_status(2);
+      return;
+    }
+    if (reads_args.empty() ? (o->scene.empty() || o->varies.empty()) : defines_runs) {
+      if (reads_args.empty())
+        std::fprintf(stderr, "firn sweep: give a scene and at least one --vary, or --collect DIR, or --resume DIR\n");
+      else
+        std::fprintf(stderr,
+                     "firn sweep: %s DIR reads the sweep's scene and values from DIR/sweep.args; give no scene, "
+                     "--vary, --set, --at, --preview or --checkpoint-every with it\n",
+                     reads_args.c_str());
+      set_exit_status(2);
+      return;
+    }
+    if (!o->resume_dir.empty() && o->scheduler != "local") {
+      std::fprintf(stderr, "firn sweep: --resume runs here; a Slurm sweep's runs resume with firn run --resume\n");
       set_exit_status(2);
       return;
     }
@@ -97,9 +119,18 @@ void add_sweep_command(CLI::App& app) {
       return;
     }
     if (!usable_backend(o->backend)) return;
-    o->shipped_scenes = shipped_scenes();
     sweep::SweepPlan plan;
     try {
+      if (!o->resume_dir.empty()) {  // the sweep's own options, with this call's --jobs and --backend
+        const sweep::SweepOptions saved = sweep::read_sweep_args(o->resume_dir);
+        const int jobs = o->jobs;
+        const std::string backend = o->backend;
+        static_cast<sweep::SweepOptions&>(*o) = saved;
+        o->jobs = jobs;
+        o->backend = backend;
+        o->resume = true;
+      }
+      o->shipped_scenes = shipped_scenes();
       plan = sweep::make_plan(*o);
     } catch (const std::invalid_argument& e) {
       std::fprintf(stderr, "firn sweep: %s\n", e.what());

@@ -6,7 +6,7 @@ sweep.csv row per combination in product order with the runs' statuses and count
 run really got its values; an unstable combination is reported in its row and makes the exit
 status 1; a bad value or list is refused with exit status 2 before anything is written; SIGINT
 stops the sweep with exit status 130, the running child interrupted and sweep.csv holding the runs
-that finished.
+that finished; a sweep killed with SIGKILL resumes with --resume to the uninterrupted runs' states.
 """
 import csv
 import glob
@@ -166,6 +166,48 @@ def test_interrupt():
     check(table(out) == [["simulation.end_time"] + RUN_COLUMNS], f"sweep.csv: {table(out)}")
     for run in ["001_1e6", "002_2e6"]:
         check(summary(os.path.join(out, "runs", run))["status"] == "interrupted", f"{run} was not stopped")
+
+
+PAIR = os.path.join(ROOT, "scenes", "snowball_pair.toml")
+
+
+def pair_sweep(out, *args):
+    """Two snowball_pair runs (about 2 s each), one at a time."""
+    return [FIRN, "sweep", PAIR, "--preview", "--out", out, "--jobs", "1", "--set", "simulation.end_time=20 ms",
+            "--vary", "simulation.cfl=0.4,0.3"] + list(args)
+
+
+def test_resume():
+    # A sweep killed with SIGKILL (the sweep and its runs at once) while its second run is part way
+    # and resumed with --resume ends with the runs of an uninterrupted sweep: the first run kept,
+    # the second resumed from its checkpoint, the same state hashes.
+    whole = fresh("resume_whole")
+    r = subprocess.run(pair_sweep(whole), capture_output=True, text=True, timeout=300)
+    check(r.returncode == 0, f"uninterrupted sweep: {r.returncode}: {r.stderr}")
+    out = fresh("resume")
+    p = subprocess.Popen(pair_sweep(out, "--checkpoint-every", "4 ms"), stderr=subprocess.PIPE, text=True,
+                         start_new_session=True)
+    runs = lambda d: sorted(glob.glob(os.path.join(d, "runs", "*")))
+    deadline = time.time() + 300
+    while time.time() < deadline and p.poll() is None:
+        r = runs(out)
+        if len(r) == 2 and os.path.exists(os.path.join(r[0], "summary.json")) and \
+                os.path.exists(os.path.join(r[1], "checkpoint.firn")):
+            break
+        time.sleep(0.02)
+    check(p.poll() is None, "the sweep ended before it was killed")
+    os.killpg(p.pid, signal.SIGKILL)
+    p.communicate(timeout=60)
+    check(not os.path.exists(os.path.join(runs(out)[1], "summary.json")), "the second run had finished")
+    r = subprocess.run([FIRN, "sweep", "--resume", out], capture_output=True, text=True, timeout=300)
+    check(r.returncode == 0 and "1 finished before, 1 to resume or run" in r.stderr, f"--resume: {r.returncode}: {r.stderr}")
+    for a, b in zip(runs(out), runs(whole)):
+        sa, sb = summary(a), summary(b)
+        check(sa["state_hash"] == sb["state_hash"] and sa["steps"] == sb["steps"],
+              f"{a}: {sa['state_hash']} after {sa['steps']} steps, uninterrupted {sb['state_hash']} after {sb['steps']}")
+    check([row[:2] for row in table(out)] == [row[:2] for row in table(whole)], f"sweep.csv: {table(out)}")
+    r = subprocess.run([FIRN, "sweep", "--resume", out, PAIR], capture_output=True, text=True, timeout=60)
+    check(r.returncode == 2, f"--resume with a scene: {r.returncode}: {r.stderr}")
 
 
 os.makedirs(SCRATCH, exist_ok=True)

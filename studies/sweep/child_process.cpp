@@ -18,7 +18,7 @@ pid_t start_child(const ChildSpec& spec) {
   std::vector<char*> argv;
   for (const std::string& a : spec.argv) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
-  const int log = ::open(spec.log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const int log = ::open(spec.log_path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | (spec.append_log ? O_APPEND : O_TRUNC), 0644);
   if (log < 0) throw std::runtime_error("cannot write " + spec.log_path + ": " + std::strerror(errno));
   const pid_t pid = ::fork();
   if (pid < 0) {

@@ -11,9 +11,10 @@ namespace firn::sweep {
 
 struct ChildSpec {
   std::vector<std::string> argv;  // argv[0] is the program
-  std::string log_path;           // created or truncated; receives stdout and stderr
+  std::string log_path;           // created or truncated (appended to with append_log); receives stdout and stderr
   std::string work_dir;           // the child's working directory; empty: this process's
   bool search_path = false;       // look argv[0] up in PATH (execvp) rather than use it as a path (execv)
+  bool append_log = false;
 };
 
 // Starts the child with the default signal dispositions and an empty signal mask, whatever this

@@ -12,6 +12,7 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "studies/sweep/child_process.hpp"
 #include "studies/sweep/finished_runs.hpp"
@@ -71,10 +72,25 @@ class LocalSweep {
     sigprocmask(SIG_BLOCK, &signals, &previous_mask_);
     masked_ = true;
     const auto start = Clock::now();
+    std::vector<std::size_t> pending;  // the runs to start, in order
     std::size_t next = 0, done = 0;
+    for (std::size_t i = 0; i < total; ++i) {
+      if (o_.resume && run_state(plan_, i) == RunState::finished) {
+        RunRecord record;
+        record.values = plan_.combinations[i];
+        read_run_outputs(run_dir(plan_, i), record);
+        finished_.add(i, std::move(record));
+        ++done;
+      } else {
+        pending.push_back(i);
+      }
+    }
+    started_done_ = done;
+    if (o_.resume)
+      report_(std::to_string(done) + " finished before, " + std::to_string(pending.size()) + " to resume or run");
     bool interrupted = false;
     while (true) {
-      while (!interrupted && next < total && running_.size() < std::size_t(o_.jobs)) launch(next++);
+      while (!interrupted && next < pending.size() && running_.size() < std::size_t(o_.jobs)) launch(pending[next++]);
       if (running_.empty()) break;
       siginfo_t info;
       const int s = sigwaitinfo(&signals, &info);
@@ -118,7 +134,9 @@ class LocalSweep {
     const std::string dir = run_dir(plan_, index);
     std::filesystem::create_directories(dir);
     ChildSpec child;
-    child.argv = run_command(o_, plan_, index, self_);
+    const bool resume = o_.resume && run_state(plan_, index) == RunState::resumable;
+    child.argv = resume ? resume_command(o_, plan_, index, self_) : run_command(o_, plan_, index, self_);
+    child.append_log = resume;
     child.argv.insert(child.argv.end(), {"--threads", std::to_string(threads_)});
     child.log_path = dir + "/log.txt";
     running_[start_child(child)] = {index, Clock::now()};
@@ -138,8 +156,8 @@ class LocalSweep {
     if (record.status != "ok")
       line += " (exit status " + std::to_string(exit_status) + ", see " + run_dir(plan_, r.index) + "/log.txt)";
     line += ", " + duration_text(seconds_since(r.start));
-    if (done < total && !stopping)
-      line += "; ETA " + duration_text(seconds_since(start) / double(done) * double(total - done));
+    if (done < total && !stopping && done > started_done_)
+      line += "; ETA " + duration_text(seconds_since(start) / double(done - started_done_) * double(total - done));
     report_(line);
     if (stopping && record.status == "interrupted") return;  // stopped by the sweep's interrupt: no row
     finished_.add(r.index, std::move(record));
@@ -153,6 +171,7 @@ class LocalSweep {
   const std::string self_ = self_executable();
   FinishedRuns finished_;
   std::map<pid_t, Running> running_;
+  std::size_t started_done_ = 0;  // runs that had finished before this sweep started (--resume)
   sigset_t previous_mask_;
   bool masked_ = false;
 };

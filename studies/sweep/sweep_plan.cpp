@@ -5,11 +5,13 @@
 #include <stdexcept>
 
 #include "engine/output/atomic_file.hpp"
+#include "engine/scene/checkpoint.hpp"
 #include "engine/scene/scene_lookup.hpp"
 #include "engine/scene/scene_reader.hpp"
 #include "engine/scene/units.hpp"
 #include "studies/sweep/combinations.hpp"
 #include "studies/sweep/metric_plot.hpp"
+#include "studies/sweep/run_record.hpp"
 
 namespace firn::sweep {
 
@@ -29,6 +31,15 @@ SweepPlan make_plan(const SweepOptions& o) {
         throw std::invalid_argument("--at " + t + ": " + e.what());
       }
     }
+  if (!o.checkpoint_every.empty()) {
+    double every = 0;
+    try {
+      every = parse_quantity(o.checkpoint_every, Quantity::time);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("--checkpoint-every " + o.checkpoint_every + ": " + e.what());
+    }
+    if (!(every > 0)) throw std::invalid_argument("--checkpoint-every must be a positive time");
+  }
   plan.plots_named = !o.plot.empty();
   plan.plots = plan.plots_named ? split_value_list(o.plot) : default_plotted_metrics;
   plan.combinations = cartesian_product(plan.keys);
@@ -50,13 +61,14 @@ void save_sweep_args(const SweepOptions& o, const SweepPlan& plan) {
   if (!o.at.empty()) text += "at=" + o.at + "\n";
   if (!o.plot.empty()) text += "plot=" + o.plot + "\n";
   if (o.preview) text += "preview=true\n";
+  if (!o.checkpoint_every.empty()) text += "checkpoint_every=" + o.checkpoint_every + "\n";
   std::filesystem::create_directories(plan.out);
   write_file_atomically(plan.out + "/sweep.args", text);
 }
 
 SweepOptions read_sweep_args(const std::string& dir) {
   std::ifstream in(dir + "/sweep.args");
-  if (!in) throw std::invalid_argument("--collect " + dir + ": no sweep.args there (not a sweep's output folder)");
+  if (!in) throw std::invalid_argument(dir + ": no sweep.args there (not a sweep's output folder)");
   SweepOptions o;
   o.out = dir;
   for (std::string line; std::getline(in, line);) {
@@ -68,6 +80,7 @@ SweepOptions read_sweep_args(const std::string& dir) {
     else if (name == "at") o.at = value;
     else if (name == "plot") o.plot = value;
     else if (name == "preview") o.preview = value == "true";
+    else if (name == "checkpoint_every") o.checkpoint_every = value;
     else throw std::invalid_argument(dir + "/sweep.args: unknown line '" + line + "'");
   }
   return o;
@@ -85,6 +98,23 @@ std::vector<std::string> run_command(const SweepOptions& o, const SweepPlan& pla
   for (const std::string& s : overrides) argv.insert(argv.end(), {"--set", s});
   if (o.preview) argv.push_back("--preview");
   argv.insert(argv.end(), {"--backend", o.backend});
+  if (!o.checkpoint_every.empty()) argv.insert(argv.end(), {"--checkpoint-every", o.checkpoint_every});
+  return argv;
+}
+
+RunState run_state(const SweepPlan& plan, std::size_t index) {
+  const std::string dir = run_dir(plan, index);
+  if (const auto summary = file_text(dir + "/summary.json")) {
+    const auto status = json_value(*summary, "status");
+    if (status == "ok" || status == "unstable") return RunState::finished;
+  }
+  return std::filesystem::exists(checkpoint_path(dir)) ? RunState::resumable : RunState::to_run;
+}
+
+std::vector<std::string> resume_command(const SweepOptions& o, const SweepPlan& plan, std::size_t index,
+                                        const std::string& self) {
+  std::vector<std::string> argv = {self, "run", "--resume", run_dir(plan, index), "--backend", o.backend};
+  if (!o.checkpoint_every.empty()) argv.insert(argv.end(), {"--checkpoint-every", o.checkpoint_every});
   return argv;
 }
 

@@ -19,10 +19,12 @@ struct SweepOptions {
   std::string out;             // empty: out/<scene name>_sweep
   std::string at, plot;        // comma-separated: times for the C@T columns, metrics to plot
   std::string backend = "openmp";
+  std::string checkpoint_every;           // each run's --checkpoint-every (a time); empty: none
   std::vector<std::string> varies, sets;  // "KEY=V1,V2,..." and "KEY=VALUE"
   std::vector<std::string> sbatch;        // options for a Slurm job array
   int jobs = 1;                           // runs at a time (local scheduler)
   bool preview = false;
+  bool resume = false;  // skip the finished runs, resume the interrupted ones from their checkpoints
 };
 
 struct SweepPlan {
@@ -54,5 +56,15 @@ std::string run_dir(const SweepPlan& plan, std::size_t index);
 // The `firn run` command line of run `index`, without --threads; `self` is firn's path.
 std::vector<std::string> run_command(const SweepOptions& o, const SweepPlan& plan, std::size_t index,
                                      const std::string& self);
+
+// What a resumed sweep does with run `index` (firn sweep --resume): nothing when it finished (its
+// summary.json says ok or unstable, both final), `firn run --resume` when it has a checkpoint,
+// else it runs from the start.
+enum class RunState { finished, resumable, to_run };
+RunState run_state(const SweepPlan& plan, std::size_t index);
+
+// The `firn run --resume` command line of run `index`, without --threads.
+std::vector<std::string> resume_command(const SweepOptions& o, const SweepPlan& plan, std::size_t index,
+                                        const std::string& self);
 
 }  // namespace firn::sweep
