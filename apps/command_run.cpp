@@ -15,16 +15,17 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
-#include "engine/output/atomic_file.hpp"
 #include "engine/scene/checkpoint.hpp"
 #include "engine/scene/scene_run.hpp"
 #include "engine/scene/units.hpp"
+#include "studies/sweep/run_record.hpp"
 #include "viz/run_rendering.hpp"
 #include "viz/surface/run_meshes.hpp"
 
@@ -68,14 +69,9 @@ class ProgressLine {
 
 // A run whose summary.json says it finished.
 bool finished_run(const std::string& out_dir) {
-  try {
-    return read_text_file(out_dir + "/summary.json").find("\"status\": \"ok\"") != std::string::npos;
-  } catch (const std::runtime_error&) {
-    return false;
-  }
+  const std::optional<std::string> summary = sweep::file_text(out_dir + "/summary.json");
+  return summary && sweep::json_value(*summary, "status") == "ok";
 }
-
-bool file_exists(const std::string& path) { return access(path.c_str(), F_OK) == 0; }
 
 }  // namespace
 
@@ -198,8 +194,13 @@ void add_run_command(CLI::App& app) {
     if (s.status != "ok") {
       std::fprintf(stderr, "firn run: %s: %s (outputs so far in %s)\n", s.status.c_str(), s.error.c_str(),
                    options.out_dir.c_str());
-      if (file_exists(checkpoint_path(options.out_dir)))
-        std::fprintf(stderr, "firn run: continue with: firn run --resume %s\n", options.out_dir.c_str());
+      if (std::filesystem::exists(checkpoint_path(options.out_dir))) {
+        if (s.status == "interrupted")
+          std::fprintf(stderr, "firn run: continue with: firn run --resume %s\n", options.out_dir.c_str());
+        else
+          std::fprintf(stderr, "firn run: the last output frame's state is in %s (firn run --resume repeats the run from it)\n",
+                       checkpoint_path(options.out_dir).c_str());
+      }
       set_exit_status(s.status == "interrupted" ? 130 : 1);
       return;
     }

@@ -378,6 +378,7 @@ class Simulation {
     out.value(std::uint64_t(loads_.size()));
     out.value(std::uint64_t(footprint_.impulse.size()));
     state_fields(out, *this);
+    out.value(std::uint8_t(loads_assigned_));
     for (const ColliderBody& c : colliders_) c.save_motion(out);
     storage_.save(out);
   }
@@ -391,6 +392,7 @@ class Simulation {
     R::expect(in.value<std::uint64_t>() == loads_.size(), "checkpoint's loads differ from the scene's");
     R::expect(in.value<std::uint64_t>() == footprint_.impulse.size(), "checkpoint's footprint differs from the scene's");
     state_fields(in, *this);
+    loads_assigned_ = in.value<std::uint8_t>() != 0;
     for (ColliderBody& c : colliders_) c.load_motion(in);
     storage_.load(in);
     std::size_t end = 0;
@@ -491,7 +493,6 @@ class Simulation {
       s.field(m.range);
       s.field(m.wave_speed);
     }
-    s.field(sim.loads_assigned_);
     for (auto& l : sim.loads_) {
       s.field(l.accel);
       s.field(l.factor);

@@ -4,7 +4,8 @@ Usage: python3 checkpoint_test.py FIRN REPO_ROOT SCRATCH_DIR TEST
 A run killed with SIGKILL (or stopped with SIGINT) part way and resumed must end with the
 uninterrupted run's state_hash and the same metrics.csv, byte for byte (no duplicate or missing
 rows); the tire scene's conveyor and loaded axle too; a checkpoint of another scene or another firn
-is refused with exit status 2, and so is a run without a checkpoint.
+or a damaged one is refused with exit status 2, and so is a run without a checkpoint; a guard stop
+leaves a checkpoint whose resume stops the same way.
 """
 import json
 import os
@@ -100,6 +101,20 @@ def test_conveyor():
     expect_same_run(out, whole)
 
 
+def test_guard():
+    # A guard stop leaves the last output frame's state; resuming it stops at the same step, with the
+    # same message and the same metrics.csv (the run is deterministic).
+    out = fresh("guard")
+    r = run(["run"] + PAIR + ["--out", out, "--set", "simulation.fixed_dt=0.3 ms", "--checkpoint-every", "1 ms"])
+    check(r.returncode == 1 and "stability guard" in r.stderr and "checkpoint.firn" in r.stderr,
+          f"unstable run: {r.returncode}: {r.stderr}")
+    first, metrics = summary(out), read(out, "metrics.csv")
+    check(first["status"] == "unstable" and first["steps"] > 4, f"summary: {first}")
+    r = run(["run", "--resume", out])
+    check(r.returncode == 1 and summary(out)["error"] == first["error"] and read(out, "metrics.csv") == metrics,
+          f"resumed unstable run: {r.returncode}: {r.stderr}")
+
+
 def refused(args, words):
     r = run(args)
     check(r.returncode == 2, f"{args} exited {r.returncode}, expected 2: {r.stderr}")
@@ -117,6 +132,11 @@ def test_refused():
     refused(["run", "--resume", other], ["another scene"])
     with open(os.path.join(pair, "checkpoint.firn"), "rb") as f:
         data = bytearray(f.read())
+    damaged = bytearray(data)
+    damaged[len(damaged) // 2] ^= 0x10  # a bit flipped in the particles
+    with open(os.path.join(pair, "checkpoint.firn"), "wb") as f:
+        f.write(bytes(damaged))
+    refused(["run", "--resume", pair], ["damaged"])
     at = data.index(b"0.1.0")  # firn's version, after the magic and the format
     data[at:at + 5] = b"9.9.9"
     with open(os.path.join(pair, "checkpoint.firn"), "wb") as f:
@@ -126,4 +146,5 @@ def test_refused():
     refused(["run", PAIR[0], "--checkpoint-every", "5 kg"], ["--checkpoint-every"])
 
 
-{"kill": test_kill, "interrupt": test_interrupt, "conveyor": test_conveyor, "refused": test_refused}[TEST]()
+{"kill": test_kill, "interrupt": test_interrupt, "conveyor": test_conveyor, "guard": test_guard,
+ "refused": test_refused}[TEST]()

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cinttypes>
 #include <cstdio>
+#include <cstring>
 
 #include "engine/output/atomic_file.hpp"
 #include "engine/version.hpp"
@@ -23,9 +24,9 @@ std::string hex(std::uint64_t v) {
 
 std::string checkpoint_path(const std::string& out_dir) { return out_dir + "/checkpoint.firn"; }
 
-std::uint64_t scene_digest(const std::string& resolved_toml) {
+std::uint64_t text_digest(const std::string& text) {
   std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : resolved_toml) h = (h ^ c) * 1099511628211ull;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
   return h;
 }
 
@@ -34,13 +35,14 @@ void write_checkpoint(const std::string& path, const std::string& resolved_toml,
   out.value(kMagic);
   out.value(kFormat);
   out.text(firn_version());
-  out.value(scene_digest(resolved_toml));
+  out.value(text_digest(resolved_toml));
   out.value(std::int32_t(c.next_frame));
   out.text(c.metrics);
   out.value(c.initial_energy);
   out.value(c.particle_steps);
   out.value(c.step_seconds);
   out.text(c.engine_state);
+  out.value(text_digest(out.bytes()));  // the whole file's, against corruption
   write_file_atomically(path, out.bytes(), true);
 }
 
@@ -52,8 +54,11 @@ RunCheckpoint read_checkpoint(const std::string& path, const std::string& resolv
     throw CheckpointError(path + ": no checkpoint (the run was not interrupted and not started with "
                                  "--checkpoint-every, or stopped before its first)");
   }
-  StateReader in(data);
   try {
+    StateReader::expect(data.size() >= sizeof(std::uint64_t), "not a firn checkpoint");
+    std::uint64_t checksum;
+    std::memcpy(&checksum, data.data() + data.size() - sizeof checksum, sizeof checksum);
+    StateReader in(data.data(), data.size() - sizeof checksum);
     char magic[8];
     in.read(magic);
     StateReader::expect(std::equal(magic, magic + 8, kMagic), "not a firn checkpoint");
@@ -64,9 +69,9 @@ RunCheckpoint read_checkpoint(const std::string& path, const std::string& resolv
     StateReader::expect(version == firn_version(), "written by firn " + version + ", this is firn " + firn_version() +
                                                         " (resume with the firn that started the run)");
     const auto digest = in.value<std::uint64_t>();
-    StateReader::expect(digest == scene_digest(resolved_toml),
+    StateReader::expect(digest == text_digest(resolved_toml),
                         "written for another scene (digest " + hex(digest) + ", the run's scene.resolved.toml has " +
-                            hex(scene_digest(resolved_toml)) + ")");
+                            hex(text_digest(resolved_toml)) + ")");
     RunCheckpoint c;
     c.next_frame = in.value<std::int32_t>();
     c.metrics = in.text();
@@ -74,7 +79,9 @@ RunCheckpoint read_checkpoint(const std::string& path, const std::string& resolv
     in.read(c.particle_steps);
     in.read(c.step_seconds);
     c.engine_state = in.text();
-    StateReader::expect(in.at_end() && c.next_frame >= 1, "checkpoint is damaged");
+    StateReader::expect(in.at_end() && c.next_frame >= 1 &&
+                            checksum == text_digest(data.substr(0, data.size() - sizeof checksum)),
+                        "checkpoint is damaged (its checksum does not match)");
     return c;
   } catch (const CheckpointError& e) {
     throw CheckpointError(path + ": " + e.what());

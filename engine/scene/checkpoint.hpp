@@ -5,8 +5,9 @@
 // Layout: the magic "FIRNCKPT", the format version, firn's version (engine/version.hpp), a 64-bit
 // FNV-1a digest of the resolved scene (scene.resolved.toml), the run's progress (the frame it is
 // heading for, metrics.csv's text so far, the energy at frame 0, the work counted for
-// summary.json), then the engine state (Simulation::save_state, then the conveyor's). A file whose
-// magic, format, firn version or scene differ is refused with a message that says which.
+// summary.json), then the engine state (Simulation::save_state, then the conveyor's), and last an
+// FNV-1a checksum of all that. A file whose magic, format, firn version, scene or checksum differ is
+// refused with a message that says which.
 #pragma once
 
 #include <cstdint>
@@ -28,8 +29,8 @@ struct RunCheckpoint {
 // OUT_DIR/checkpoint.firn
 std::string checkpoint_path(const std::string& out_dir);
 
-// FNV-1a over the text: the identity of a resolved scene.
-std::uint64_t scene_digest(const std::string& resolved_toml);
+// FNV-1a (64 bits) over a text: the identity of a resolved scene, and a checkpoint's checksum.
+std::uint64_t text_digest(const std::string& text);
 
 // Writes the checkpoint of a run of the scene whose resolved text is `resolved_toml`, atomically
 // and durably; throws std::runtime_error on an I/O failure.
