@@ -4,20 +4,13 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "studies/sweep/csv.hpp"
+#include "studies/sweep/run_record.hpp"
 
 namespace firn::study {
 namespace {
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The value of attribute `name` inside one XML tag, or "".
 std::string attribute(const std::string& tag, const std::string& name) {
@@ -91,13 +84,13 @@ std::vector<std::string> non_finite_outputs(const std::string& run_dir) {
   std::vector<std::string> found;
   const fs::path metrics = fs::path(run_dir) / "metrics.csv";
   if (fs::exists(metrics))
-    if (const std::string where = non_finite_in_csv(read_file(metrics)); !where.empty())
+    if (const std::string where = non_finite_in_csv(sweep::file_text(metrics.string()).value_or("")); !where.empty())
       found.push_back(metrics.string() + ": " + where);
   const fs::path particles = fs::path(run_dir) / "particles";
   if (fs::is_directory(particles))
     for (const auto& entry : fs::directory_iterator(particles))
       if (entry.path().extension() == ".vtp")
-        if (const std::string where = non_finite_in_vtp(read_file(entry.path())); !where.empty())
+        if (const std::string where = non_finite_in_vtp(sweep::file_text(entry.path().string()).value_or("")); !where.empty())
           found.push_back(entry.path().string() + ": " + where);
   return found;
 }

@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -14,18 +13,12 @@
 #include "studies/stability/stability_output_scan.hpp"
 #include "studies/stability/stability_random_scene.hpp"
 #include "studies/sweep/child_process.hpp"
+#include "studies/sweep/run_record.hpp"
 
 namespace firn::study {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The log's line holding `needle`, else its last non-empty line.
 std::string log_line(const std::string& log, const std::string& needle) {
@@ -91,7 +84,7 @@ void run_random_scenes(const RandomRunSettings& s, const std::function<void(cons
     if (it == children.running.end()) continue;
     const Running r = it->second;
     children.running.erase(it);
-    const std::string dir = folder(r.index), log = read_text(dir + "/log.txt");
+    const std::string dir = folder(r.index), log = sweep::file_text(dir + "/log.txt").value_or("");
     const std::vector<std::string> bad = non_finite_outputs(dir + "/out");
     RandomRunResult result;
     result.index = r.index;

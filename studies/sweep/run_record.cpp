@@ -1,17 +1,18 @@
 #include "studies/sweep/run_record.hpp"
 
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
+#include <stdexcept>
+
+#include "engine/output/atomic_file.hpp"
 
 namespace firn::sweep {
 
 std::optional<std::string> file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  try {
+    return read_text_file(path);
+  } catch (const std::runtime_error&) {
+    return std::nullopt;
+  }
 }
 
 namespace {
