@@ -24,7 +24,6 @@
 #include "apps/commands.hpp"
 #include "engine/scene/checkpoint.hpp"
 #include "engine/scene/scene_run.hpp"
-#include "engine/scene/units.hpp"
 #include "studies/sweep/run_record.hpp"
 #include "viz/run_rendering.hpp"
 #include "viz/surface/run_meshes.hpp"
@@ -115,11 +114,10 @@ void add_run_command(CLI::App& app) {
     RunOptions options;
     if (!o->checkpoint_every.empty()) {
       try {
-        options.checkpoint_every = parse_quantity(o->checkpoint_every, Quantity::time);
+        options.checkpoint_every = checkpoint_interval(o->checkpoint_every);
       } catch (const std::invalid_argument& e) {
-        return refuse("--checkpoint-every: " + std::string(e.what()));
+        return refuse(e.what());
       }
-      if (!(options.checkpoint_every > 0)) return refuse("--checkpoint-every must be a positive time");
     }
     const std::optional<BackendKind> backend = usable_backend(o->backend);
     if (!backend) return;

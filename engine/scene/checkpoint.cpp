@@ -4,8 +4,10 @@
 #include <cinttypes>
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
 
 #include "engine/output/atomic_file.hpp"
+#include "engine/scene/units.hpp"
 #include "engine/version.hpp"
 
 namespace firn {
@@ -21,6 +23,17 @@ std::string hex(std::uint64_t v) {
 }
 
 }  // namespace
+
+double checkpoint_interval(const std::string& text) {
+  double every = 0;
+  try {
+    every = parse_quantity(text, Quantity::time);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("--checkpoint-every " + text + ": " + e.what());
+  }
+  if (!(every > 0)) throw std::invalid_argument("--checkpoint-every " + text + ": not a positive time");
+  return every;
+}
 
 std::string checkpoint_path(const std::string& out_dir) { return out_dir + "/checkpoint.firn"; }
 

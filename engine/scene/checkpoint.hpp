@@ -26,6 +26,10 @@ struct RunCheckpoint {
   std::string engine_state;    // Simulation::save_state, then the conveyor's
 };
 
+// The interval of --checkpoint-every ("50ms", "0.05"), in simulated seconds; throws
+// std::invalid_argument naming the option when the text is not a positive time.
+double checkpoint_interval(const std::string& text);
+
 // OUT_DIR/checkpoint.firn
 std::string checkpoint_path(const std::string& out_dir);
 

@@ -31,15 +31,7 @@ SweepPlan make_plan(const SweepOptions& o) {
         throw std::invalid_argument("--at " + t + ": " + e.what());
       }
     }
-  if (!o.checkpoint_every.empty()) {
-    double every = 0;
-    try {
-      every = parse_quantity(o.checkpoint_every, Quantity::time);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("--checkpoint-every " + o.checkpoint_every + ": " + e.what());
-    }
-    if (!(every > 0)) throw std::invalid_argument("--checkpoint-every must be a positive time");
-  }
+  if (!o.checkpoint_every.empty()) checkpoint_interval(o.checkpoint_every);  // throws when it is not a time
   plan.plots_named = !o.plot.empty();
   plan.plots = plan.plots_named ? split_value_list(o.plot) : default_plotted_metrics;
   plan.combinations = cartesian_product(plan.keys);
