@@ -54,6 +54,22 @@ const std::vector<MaterialModelSpec>& material_model_specs() {
            {"Jp_min", Quantity::dimensionless, 0.0, 0, kInf, "lower clamp of J_P (0: none)"},
            {"Jp_max", Quantity::dimensionless, kInf, 0, kInf, "upper clamp of J_P (inf: none)"},
        }},
+      {"snow_cam_clay",
+       "Mooney-Rivlin elasticity (G2 = 0) of b_e with modified Cam-clay plasticity, yield (1 + 2 beta) q^2 + "
+       "M^2 (p + beta p0)(p - p0) <= 0, non-associative return (Gaume et al. 2018; Wolper et al. 2019), p0 "
+       "hardening with compaction and softening with dilation",
+       true,
+       {
+           {"M", Quantity::dimensionless, std::nullopt, 1e-6, 10, "slope of the critical state line"},
+           {"beta", Quantity::dimensionless, std::nullopt, 0, 10, "cohesion: the tensile strength is beta p0"},
+           {"p0", Quantity::pressure, std::nullopt, 0, kInf,
+            "consolidation pressure (compressive strength) at the rest density"},
+           {"hardening_density", Quantity::density, std::nullopt, 1e-6, kInf,
+            "compaction hardening scale: p0 = p0(rest) exp((rho_P - density) / hardening_density), rho_P the "
+            "plastically compacted density"},
+           {"softening_strain", Quantity::dimensionless, std::nullopt, 1e-9, 10,
+            "plastic dilation ln J_P over which p0, and the cohesion beta p0, fall linearly to zero"},
+       }},
   };
   return specs;
 }
@@ -73,6 +89,19 @@ const std::vector<MaterialPreset>& material_presets() {
         doc,
         {{"density", rho}, {"K", K}, {"G", G}, {"hardening", 1}, {"K_h", K_h}, {"n", 0.02}, {"sigma_y0", 100}}};
   };
+  const auto cam_clay = [](const char* name, const char* doc, double rho, double E, double beta, double p0) {
+    return MaterialPreset{name,
+                          "snow_cam_clay",
+                          doc,
+                          {{"density", rho},
+                           {"E", E},
+                           {"nu", 0.2},
+                           {"M", 1},
+                           {"beta", beta},
+                           {"p0", p0},
+                           {"hardening_density", 83.06},
+                           {"softening_strain", 0.01}}};
+  };
   static const std::vector<MaterialPreset> presets = {
       {"thesis_stomakhin_snow",
        "snow_stomakhin",
@@ -83,6 +112,14 @@ const std::vector<MaterialPreset>& material_presets() {
       snow("thesis_core", "thesis Table 4.2, core", 330, 26.7e3, 20e3, 10),
       snow("thesis_hard_snow", "thesis Table 4.3, hard snow", 400, 78e3, 58.3e3, 15),
       snow("thesis_soft_snow", "thesis Table 4.3, soft snow", 330, 26.7e3, 20e3, 10),
+      // Cam-clay snow calibrated on laboratory data only: data/snow/fit_cam_clay.py prints these
+      // lines (E: Scapozza 2004; p0 and hardening_density: CRREL Report 95-7; beta: Sigrist 2006;
+      // M: plate sinkage against Bekker's curve; docs/snow.md). packed_snow is at the thesis' hard
+      // snow density (Table 4.3).
+      cam_clay("fresh_snow", "fresh snow, 220 kg/m^3 (data/snow/fit_cam_clay.py)", 220, 4.968e+06, 1.423, 5179),
+      cam_clay("soft_cam_clay_snow", "the thesis' soft snow density, 330 kg/m^3 (data/snow/fit_cam_clay.py)", 330,
+               2.558e+07, 1.018, 1.947e+04),
+      cam_clay("packed_snow", "packed snow, 400 kg/m^3 (data/snow/fit_cam_clay.py)", 400, 7.26e+07, 0.7009, 4.523e+04),
       {"thesis_tire_rubber",
        "mooney_rivlin",
        "thesis sec. 4.1.2: E = 1e7 Pa, nu = 0.49, 0.93 g/cm^3 (its ref. 25)",

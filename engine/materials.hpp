@@ -18,13 +18,15 @@
 #include "kernels/constitutive/hyperelastic_plastic.hpp"
 #include "kernels/constitutive/mooney_rivlin.hpp"
 #include "kernels/constitutive/neo_hookean.hpp"
+#include "kernels/constitutive/snow_cam_clay.hpp"
 #include "kernels/constitutive/snow_stomakhin.hpp"
 
 namespace firn {
 
 template <class T>
 using MaterialModel =
-    std::variant<NeoHookean<T>, FixedCorotated<T>, MooneyRivlin<T>, HyperelasticPlastic<T>, SnowStomakhin<T>>;
+    std::variant<NeoHookean<T>, FixedCorotated<T>, MooneyRivlin<T>, HyperelasticPlastic<T>, SnowStomakhin<T>,
+                 SnowCamClay<T>>;
 
 struct MaterialInfo {
   std::string name;
@@ -83,6 +85,12 @@ MaterialModel<T> make_material_model(const MaterialInfo& info) {
   if (info.model == SnowStomakhin<T>::kName)
     return SnowStomakhin<T>{T(m.mu()),        T(m.lambda()),   param("xi"),    param("theta_c"),
                             param("theta_s"), param("Jp_min"), param("Jp_max")};
+  if (info.model == SnowCamClay<T>::kName)
+    return SnowCamClay<T>{MooneyRivlin<T>{T(m.K), T(m.G), T(0)},
+                          param("M"),
+                          param("beta"),
+                          CamClayHardening<T>{param("p0"), T(info.density), param("hardening_density"),
+                                              param("softening_strain")}};
   throw std::invalid_argument("unknown material model '" + info.model + "'");
 }
 

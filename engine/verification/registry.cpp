@@ -6,7 +6,7 @@ namespace firn {
 
 namespace {
 const char* const kDriverPrefix = "material_driver_";
-const char* const kDriverModels[] = {"hyperelastic_plastic", "snow_stomakhin", "mooney_rivlin"};
+const char* const kDriverModels[] = {"hyperelastic_plastic", "snow_stomakhin", "mooney_rivlin", "snow_cam_clay"};
 }  // namespace
 
 std::vector<std::string> verification_problems() {

@@ -95,7 +95,7 @@ std::vector<VerificationRow> verify_incline_rolling_fine(const VerificationOptio
 VerificationCase incline_rolling_case(int level, const VerificationMethod& method, const VerificationOptions& options);
 
 // Material-point driver (material_driver.hpp) for one constitutive model ("hyperelastic_plastic",
-// "snow_stomakhin", "mooney_rivlin"): closed forms, yield surface and J_P bookkeeping after every
+// "snow_stomakhin", "mooney_rivlin", "snow_cam_clay"): closed forms, yield surface and J_P bookkeeping after every
 // return, sub-stepped references, objectivity. One row per check.
 std::vector<VerificationRow> verify_material_driver(const std::string& model);
 

@@ -34,10 +34,10 @@
 
 #include <cmath>
 
+#include "kernels/constitutive/deviator_rescale.hpp"
 #include "kernels/constitutive/j2_hardening.hpp"
 #include "kernels/constitutive/mooney_rivlin.hpp"
 #include "kernels/constitutive/plastic_state.hpp"
-#include "kernels/float_limits.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/mat3.hpp"
 #include "kernels/svd3.hpp"
@@ -95,29 +95,11 @@ struct HyperelasticPlastic {
     const T keep = T(1) - T(2) * mu_bar * dgamma / s_norm;  // 1 - beta
     state.alpha += sqrt23 * dgamma;
 
-    // Step 3: principal values c_i = (1 - beta) d_i of the returned dev(bbar_e), then the trace part
-    // x with prod(x + c_i) = 1. h(x) = prod(x + c_i) - 1 is increasing and convex where all factors
-    // are positive, and h(Ibar) >= 0 (for fixed trace the product grows as the deviation shrinks), so
-    // Newton from x = Ibar decreases monotonically to the root without leaving that region.
+    // Step 3: dev(bbar_e) = (1 - beta) dev(bbar_tr) at the same J (kernels/constitutive/deviator_rescale.hpp).
     Mat3<T> U, V;
     Vec3<T> sig;
     svd3(F, U, sig, V);
-    Vec3<T> c;
-    for (int d = 0; d < 3; ++d) c[d] = keep * (Jm23 * sig[d] * sig[d] - Ibar);
-    T x = Ibar;
-    for (int it = 0; it < 32; ++it) {
-      const T a0 = x + c[0], a1 = x + c[1], a2 = x + c[2];
-      const T h = a0 * a1 * a2 - T(1);
-      const T step = h / (a0 * a1 + a1 * a2 + a0 * a2);
-      x -= step;
-      if (!(step > T(4) * FloatLimits<T>::kEpsilon * x)) break;
-    }
-    Vec3<T> s_new;
-    for (int d = 0; d < 3; ++d) s_new[d] = std::sqrt(x + c[d]);
-    // Rescale by (J / prod)^(1/3): J^(1/3) from bbar -> b_e, and the rounding left in prod(x + c_i).
-    const T scale = std::cbrt(J / (s_new[0] * s_new[1] * s_new[2]));
-    for (int d = 0; d < 3; ++d) s_new[d] *= scale;
-    F = svd_compose(U, s_new, V);
+    F = rescale_isochoric_deviator(U, sig, V, Jm23, Ibar, keep, J);
     return true;
   }
 };

@@ -1,0 +1,113 @@
+// Cam-clay snow (kernels/constitutive/snow_cam_clay.hpp; Gaume et al. 2018, Wolper et al. 2019):
+// the hardening law's branches and slope, the elastic path, the three return cases (the material
+// driver's closed forms are in firn verify, material_driver_snow_cam_clay), float precision.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/materials.hpp"
+#include "kernels/constitutive/snow_cam_clay.hpp"
+
+namespace firn {
+namespace {
+
+// fresh_snow's parameters (engine/material_catalog.cpp) written out, so a change there shows here.
+template <class T>
+SnowCamClay<T> fresh_snow() {
+  const double E = 4.968e6, nu = 0.2, K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
+  return SnowCamClay<T>{MooneyRivlin<T>{T(K), T(G), T(0)}, T(1), T(1.423),
+                        CamClayHardening<T>{T(5179), T(220), T(83.06), T(0.01)}};
+}
+
+double pressure(const Mat3<double>& tau) { return -trace(tau) / 3; }
+
+TEST(CamClayHardening, BranchesMeetAndSlopeIsTheDerivative) {
+  const CamClayHardening<double> h{5179, 220, 83.06, 0.01};
+  EXPECT_DOUBLE_EQ(h.pressure(0), 5179);
+  EXPECT_NEAR(h.pressure(-1e-12), 5179, 1e-5);
+  EXPECT_DOUBLE_EQ(h.pressure(-0.01), 0);
+  EXPECT_DOUBLE_EQ(h.pressure(-0.5), 0);
+  // Compaction to 550 kg/m^3: p0 = p0(rest) exp((550 - 220) / 83.06).
+  EXPECT_NEAR(h.pressure(std::log(550.0 / 220)), 5179 * std::exp(330 / 83.06), 1e-6);
+  for (double eps : {-0.005, 0.1, 0.6}) {
+    double p0, slope;
+    h.evaluate(eps, p0, slope);
+    const double d = 1e-7;
+    EXPECT_NEAR(slope, (h.pressure(eps + d) - h.pressure(eps - d)) / (2 * d), 1e-5 * std::abs(slope)) << eps;
+  }
+}
+
+TEST(SnowCamClay, SmallStrainIsElasticAndLeavesEverythingAlone) {
+  const SnowCamClay<double> m = fresh_snow<double>();
+  Mat3<double> F = {{1.0002, 0.0001, 0, 0, 0.9999, 0, 0, 0, 1}};
+  const Mat3<double> before = F;
+  PlasticState<double> s;
+  EXPECT_LT(m.yield_function(F, s), 0);
+  EXPECT_FALSE(m.project(F, s));
+  for (int q = 0; q < 9; ++q) EXPECT_EQ(F.m[q], before.m[q]);
+  EXPECT_EQ(s.Jp, 1);
+}
+
+TEST(SnowCamClay, ShearBetweenTheTipsKeepsThePressureAndVolume) {
+  const SnowCamClay<double> m = fresh_snow<double>();
+  const double J = 0.9995;  // a little compression, p well inside (-beta p0, p0)
+  Mat3<double> F = std::cbrt(J) * Mat3<double>{{1, 0.05, 0, 0, 1, 0, 0, 0, 1}};
+  PlasticState<double> s;
+  const double p_trial = pressure(m.kirchhoff(F));
+  ASSERT_GT(m.yield_function(F, s), 0);
+  ASSERT_LT(p_trial, m.consolidation_pressure(s));
+  EXPECT_TRUE(m.project(F, s));
+  EXPECT_EQ(s.Jp, 1);
+  EXPECT_NEAR(determinant(F), J, 1e-14);
+  EXPECT_NEAR(pressure(m.kirchhoff(F)), p_trial, 1e-9 * m.hardening.p_c0);
+  EXPECT_NEAR(m.yield_function(F, s), 0, 1e-9 * m.hardening.p_c0 * m.hardening.p_c0);
+}
+
+TEST(SnowCamClay, CompressionPastTheTipCompactsAndHardens) {
+  const SnowCamClay<double> m = fresh_snow<double>();
+  Mat3<double> F = std::cbrt(0.8) * Mat3<double>::identity();  // 220 -> 275 kg/m^3 in one step
+  PlasticState<double> s;
+  EXPECT_TRUE(m.project(F, s));
+  EXPECT_LT(s.Jp, 1);
+  const double p = pressure(m.kirchhoff(F)), p0 = m.consolidation_pressure(s);
+  EXPECT_GT(p0, m.hardening.p_c0);
+  EXPECT_NEAR(p, p0, 1e-9 * p0);
+  EXPECT_NEAR(determinant(F) * s.Jp, 0.8, 1e-14);
+}
+
+TEST(SnowCamClay, StretchPastTheTensileTipSoftens) {
+  const SnowCamClay<double> m = fresh_snow<double>();
+  Mat3<double> F = Mat3<double>::diag(1.004, 1, 1);  // tension beyond beta p0 / K
+  PlasticState<double> s;
+  EXPECT_TRUE(m.project(F, s));
+  EXPECT_GT(s.Jp, 1);
+  const double p0 = m.consolidation_pressure(s);
+  EXPECT_LT(p0, m.hardening.p_c0);
+  EXPECT_NEAR(pressure(m.kirchhoff(F)), -m.beta * p0, 1e-9 * m.hardening.p_c0);
+}
+
+TEST(SnowCamClay, FloatReturnMatchesDouble) {
+  const SnowCamClay<double> md = fresh_snow<double>();
+  const SnowCamClay<float> mf = fresh_snow<float>();
+  const Mat3<double> start = std::cbrt(0.7) * Mat3<double>{{1, 0.2, 0, 0.01, 1, 0, 0, 0, 1.02}};
+  Mat3<double> Fd = start;
+  Mat3<float> Ff;
+  for (int q = 0; q < 9; ++q) Ff.m[q] = float(start.m[q]);
+  PlasticState<double> sd;
+  PlasticState<float> sf;
+  EXPECT_TRUE(md.project(Fd, sd));
+  EXPECT_TRUE(mf.project(Ff, sf));
+  EXPECT_NEAR(sf.Jp, sd.Jp, 1e-5);
+  const Mat3<double> tau_d = md.kirchhoff(Fd);
+  const Mat3<float> tau_f = mf.kirchhoff(Ff);
+  for (int q = 0; q < 9; ++q) EXPECT_NEAR(tau_f.m[q], tau_d.m[q], 2e-3 * md.consolidation_pressure(sd)) << q;
+}
+
+TEST(SnowCamClay, CatalogPresetBuildsThisModel) {
+  const MaterialPreset* preset = find_material_preset("fresh_snow");
+  ASSERT_NE(preset, nullptr);
+  EXPECT_EQ(preset->model, "snow_cam_clay");
+}
+
+}  // namespace
+}  // namespace firn
