@@ -114,8 +114,8 @@ const std::vector<MaterialPreset>& material_presets() {
       snow("thesis_soft_snow", "thesis Table 4.3, soft snow", 330, 26.7e3, 20e3, 10),
       // Cam-clay snow calibrated on laboratory data only: data/snow/fit_cam_clay.py prints these
       // lines (E: Scapozza 2004; p0 and hardening_density: CRREL Report 95-7; beta: Sigrist 2006;
-      // M: plate sinkage against Bekker's curve; docs/snow.md). packed_snow is at the thesis' hard
-      // snow density (Table 4.3).
+      // M = 1 is a placeholder until its plate-sinkage calibration; docs/snow.md). packed_snow is
+      // at the thesis' hard snow density (Table 4.3).
       cam_clay("fresh_snow", "fresh snow, 220 kg/m^3 (data/snow/fit_cam_clay.py)", 220, 4.968e+06, 1.423, 5179),
       cam_clay("soft_cam_clay_snow", "the thesis' soft snow density, 330 kg/m^3 (data/snow/fit_cam_clay.py)", 330,
                2.558e+07, 1.018, 1.947e+04),

@@ -11,8 +11,9 @@ Each parameter comes from one data set; nothing here looks at a wheel or a snowb
                         step); p0 of a preset is the law at its rest density.
   beta                  tensile strength over p0, the tensile strength from Sigrist 2006 (PhD thesis,
                         ETH Zurich): sigma_t = 240 kPa (rho / 917)^2.44.
-  M                     from the plate-sinkage calibration (snow_plate_sinkage.toml against the
-                        Bekker curve of Wong, Theory of Ground Vehicles, Table 2.3), passed in below.
+  M                     1.0 for now: NOT calibrated yet. Its data set is to be plate sinkage
+                        (a snow_plate_sinkage scene against the Bekker curve of Wong, Theory of
+                        Ground Vehicles, Table 2.3); until then M is a placeholder (issue 16).
   softening_strain      0.01: the critical tensile strain of snow is 1% or less (Jamieson and
                         Johnston 1990, Can. Geotech. J. 27:296).
 
@@ -28,7 +29,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ICE_DENSITY = 917.0
 POISSON = 0.2
 SOFTENING_STRAIN = 0.01
-M = 1.0  # plate-sinkage calibration, docs/snow.md
+M = 1.0  # placeholder until the plate-sinkage calibration (see the docstring)
 PRESETS = [("fresh_snow", 220.0), ("soft_cam_clay_snow", 330.0), ("packed_snow", 400.0)]
 
 

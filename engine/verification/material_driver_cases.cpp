@@ -237,24 +237,24 @@ std::vector<VerificationRow> verify_snow_cam_clay() {
   r.add("zero_stress", 0, 1e-14, [&] { return zero_stress_error(model); });
 
   // Hydrostatic compaction to J = 0.4 (220 to 550 kg/m^3, the CRREL range): q = 0 throughout and,
-  // past the compressive tip, p = p0(rho_P). Closed form by inverting the hardening law: from the
-  // returned p, J_E = sqrt(1 - 2p/K) and rho_P = rho0 + rho_h ln(p / p0(rest)), so the total
-  // J = J_E rho0 / rho_P; error |J(p) - det F| relative to J (and q / p), where the model yielded.
-  // Bound: rounding of the tip's Newton solve (1e-10).
+  // past the compressive tip, the Cauchy pressure p = p_tau / J = p0(rho_P). Closed form by
+  // inverting the hardening law: from the returned p_tau, J_E = sqrt(1 - 2 p_tau / K) and
+  // rho_P = rho0 + rho_h ln(p / p0(rest)), so J = J_E rho0 / rho_P; error |J(p) - det F| relative
+  // to J (and q / p), where the model yielded. Bound: rounding of the tip's Newton solve (1e-10).
   r.add("hydrostatic_compaction_closed_form", 400, 1e-10, [&] {
     const DriverHistory h = drive_material(model, paths::compress_and_shear(0.4, 0), 400);
     double e = 0;
     for (std::size_t k = 0; k < h.F.size(); ++k) {
-      const double p = mean_pressure(h.tau[k]), J = determinant(h.F[k]);
-      e = std::max(e, von_mises(h.tau[k]) / std::max(p, p_c0));
+      const double p_tau = mean_pressure(h.tau[k]), J = determinant(h.F[k]);
+      e = std::max(e, von_mises(h.tau[k]) / std::max(p_tau, p_c0));
       if (h.state[k].Jp == 1) continue;  // still elastic
-      const double rho_P = rho0 + rho_h * std::log(p / p_c0);
-      e = std::max(e, std::abs(std::sqrt(1 - 2 * p / K) * rho0 / rho_P - J) / J);
+      const double rho_P = rho0 + rho_h * std::log(p_tau / J / p_c0);
+      e = std::max(e, std::abs(std::sqrt(1 - 2 * p_tau / K) * rho0 / rho_P - J) / J);
     }
     return e;
   });
 
-  // Dilation to J = 1.05: the tensile tip p = -beta p0 with p0 = p0(rest) (1 + eps / eps_s),
+  // Dilation to J = 1.05: the tensile tip p_tau / J = -beta p0 with p0 = p0(rest) (1 + eps / eps_s),
   // eps = -ln J_P, softening to no strength at all; inverted like the row above. Error: the
   // closed form's deviation relative to J, and at the end the stress relative to p0(rest).
   // Bound: rounding (1e-10).
@@ -262,24 +262,25 @@ std::vector<VerificationRow> verify_snow_cam_clay() {
     const DriverHistory h = drive_material(model, paths::compress_and_shear(1.05, 0), 400);
     double e = max_abs(h.tau.back()) / p_c0 + cc.consolidation_pressure(h.state.back()) / p_c0;
     for (std::size_t k = 0; k < h.F.size(); ++k) {
-      const double p = mean_pressure(h.tau[k]), J = determinant(h.F[k]);
+      const double p_tau = mean_pressure(h.tau[k]), J = determinant(h.F[k]);
       if (h.state[k].Jp == 1 || cc.consolidation_pressure(h.state[k]) == 0) continue;  // elastic, or no strength left
-      const double eps = cc.hardening.eps_s * (-p / (cc.beta * p_c0) - 1);
-      e = std::max(e, std::abs(std::sqrt(1 - 2 * p / K) * std::exp(-eps) - J) / J);
+      const double eps = cc.hardening.eps_s * (-p_tau / J / (cc.beta * p_c0) - 1);
+      e = std::max(e, std::abs(std::sqrt(1 - 2 * p_tau / K) * std::exp(-eps) - J) / J);
     }
     return e;
   });
 
   // Yield surface after every return, on compaction with shear, simple shear and cyclic loading:
-  // y(p, q) <= 0 recomputed from the returned stress, relative to M^2 p0^2 at the state's p0 (and
-  // p0(rest)), and det(F_E) J_P = det F. Bound: rounding (1e-9).
+  // y(p, q) <= 0 recomputed from the returned Cauchy stress tau / J, relative to M^2 p0^2 at the
+  // state's p0 (and p0(rest)), and det(F_E) J_P = det F. Bound: rounding (1e-9).
   r.add("yield_surface_and_volume", 3 * 400, 1e-9, [&] {
     double e = 0;
     for (const DeformationPath& path :
          {paths::compress_and_shear(0.5, 2.0), paths::simple_shear(1.0), paths::cyclic_uniaxial_strain(0.05, 3)}) {
       const DriverHistory h = drive_material(model, path, 400);
       for (std::size_t k = 0; k < h.F.size(); ++k) {
-        const double p = mean_pressure(h.tau[k]), q = von_mises(h.tau[k]);
+        const double J = determinant(h.F[k]);
+        const double p = mean_pressure(h.tau[k]) / J, q = von_mises(h.tau[k]) / J;
         const double p0 = cc.consolidation_pressure(h.state[k]);
         const double y = (1 + 2 * cc.beta) * q * q + cc.M * cc.M * (p + cc.beta * p0) * (p - p0);
         e = std::max(e, y / (cc.M * cc.M * std::max(p0, p_c0) * std::max(p0, p_c0)));

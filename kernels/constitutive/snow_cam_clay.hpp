@@ -7,7 +7,12 @@
 // Storage: the engine's F holds F_E; the plastic state keeps J_P = det F_P, so J = det(F_E) J_P.
 // Elasticity: Mooney-Rivlin with G2 = 0 (kernels/constitutive/mooney_rivlin.hpp),
 //   tau = G J_E^(-2/3) dev(b_e) + K/2 (J_E^2 - 1) I,
-// so p = -tr(tau)/3 = K/2 (1 - J_E^2) (positive in compression) and q = sqrt(3/2) ||dev tau||.
+// with p_tau = -tr(tau)/3 = K/2 (1 - J_E^2) (positive in compression) and q_tau = sqrt(3/2) ||dev tau||.
+// The yield surface is one of the true (Cauchy) stress sigma = tau / J, J = J_E J_P the total
+// volume ratio, since that is what a plate or a piston measures and what laboratory compaction
+// data give: p = p_tau / J, q = q_tau / J. (A surface in tau, as in CD-MPM's code, would put the
+// measured pressure of snow compacted to J_P = 0.4 at 2.5 times its yield pressure.) J is fixed
+// during a return, so the surface in tau is the Cauchy one with p0 scaled by J.
 // Yield (Gaume et al. 2018, eq. 2):  y(p, q) = (1 + 2 beta) q^2 + M^2 (p + beta p0)(p - p0) <= 0,
 // an ellipse in (p, q) from the tensile tip p = -beta p0 to the compressive tip p = p0, with M the
 // slope of the critical state line and beta p0 the cohesion; p0 hardens with compaction and
@@ -16,7 +21,7 @@
 // Return mapping for a trial state with y > 0 (Wolper et al. 2019, Algorithm 2, with implicit
 // hardening at the tips):
 //   p > p0 (beyond the compressive tip): project to the tip, q = 0 and p = p0(J_P,new), where
-//     J_P,new = J / J_E(p) and J_E(p) = sqrt(1 - 2p/K): one scalar equation in p, solved by
+//     J_P,new = J / J_E(p_tau) and J_E(p_tau) = sqrt(1 - 2 p_tau / K): one scalar equation, solved by
 //     safeguarded Newton; the plastic volume change is compaction, so p0 rises (hardening).
 //   p < -beta p0 (beyond the tensile tip): q = 0 and p = -beta p0(J_P,new): dilation, p0 and the
 //     cohesion with it fall (softening); once p0 = 0 the snow carries no stress until it is
@@ -58,13 +63,14 @@ struct SnowCamClay {
     return hardening.pressure(-std::log(state.Jp));
   }
 
-  // y(p, q) above for the stress of F_E; <= 0 is admissible. Units Pa^2.
+  // y(p, q) above, in Cauchy stress, for the elastic F and the state; <= 0 is admissible. Units Pa^2.
   FIRN_HD T yield_function(const Mat3<T>& F, const PlasticState<T>& state) const {
     T J, Jm23, Ibar, q;
     invariants(F, J, Jm23, Ibar, q);
-    const T p = elastic.K / T(2) * (T(1) - J * J);
+    const T Jt = J * state.Jp;
+    const T p = elastic.K / T(2) * (T(1) - J * J) / Jt, qc = q / Jt;
     const T p0 = consolidation_pressure(state);
-    return (T(1) + T(2) * beta) * q * q + M * M * (p + beta * p0) * (p - p0);
+    return (T(1) + T(2) * beta) * qc * qc + M * M * (p + beta * p0) * (p - p0);
   }
 
   // First order in the step, as for Stomakhin's clamp: the elastic energy the return takes out,
@@ -78,18 +84,20 @@ struct SnowCamClay {
     T J, Jm23, Ibar, q;
     invariants(F, J, Jm23, Ibar, q);
     if (!(J > T(0))) return false;  // inverted or NaN: left for the stability guard to name
+    // In Kirchhoff terms throughout: the Cauchy surface with p0 scaled by the total J (above).
     const T K = elastic.K;
+    const T Jt = J * state.Jp;
     const T p = K / T(2) * (T(1) - J * J);
     const T eps = -std::log(state.Jp);
-    const T p0 = hardening.pressure(eps);
+    const T p0 = Jt * hardening.pressure(eps);
     const T ellipse = M * M * (p + beta * p0) * (p - p0);
     if ((T(1) + T(2) * beta) * q * q + ellipse <= T(0)) return false;  // elastic
 
     T p_new = p, keep = T(0);
     if (p > p0)
-      p_new = tip_pressure(T(1), p, J, eps);
+      p_new = tip_pressure(Jt, p, J, eps);
     else if (p < -beta * p0)
-      p_new = tip_pressure(-beta, p, J, eps);
+      p_new = tip_pressure(-beta * Jt, p, J, eps);
     else
       keep = std::sqrt(-ellipse / (T(1) + T(2) * beta)) / q;  // q > 0: y > 0 with ellipse <= 0
     const T J_new = std::sqrt(T(1) - T(2) * p_new / K);
@@ -114,8 +122,9 @@ struct SnowCamClay {
     q = std::sqrt(T(1.5) * ddot(dev, dev)) * elastic.G1 * Jm23;
   }
 
-  // The pressure of a tip projection: the root of g(p) = p - a p0(eps(p)) with a = 1 (compressive
-  // tip) or a = -beta (tensile tip), where eps(p) = -ln J_P,new = eps_n + ln(J_E(p) / J) is the
+  // The Kirchhoff pressure of a tip projection: the root of g(p) = p - a p0(eps(p)) with a = J_t
+  // (compressive tip) or a = -beta J_t (tensile tip), J_t the total J, where
+  // eps(p) = -ln J_P,new = eps_n + ln(J_E(p) / J) is the
   // plastic compaction after the return. g(p_tr) has the sign of p_tr - a p0(eps_n) and g(0) =
   // -a p0 the other one, so [min(0, p_tr), max(0, p_tr)] brackets the root; safeguarded Newton
   // (Press et al., Numerical Recipes 3rd ed., sec. 9.4 "rtsafe"), as in solve_j2_return.
