@@ -166,9 +166,9 @@ std::vector<SectionSpec> build_schema() {
                "The tire of the thesis' experiment: a rigid collider with a tread pattern, its axle along z "
                "through `center`, turning so that the tread at the ground moves toward -x at `speed` (the tire "
                "rolls toward +x), or turning freely under the snow's torque (`spin = \"free\"`). Its grooves are "
-               "exact at any grid size (a signed distance function). A loaded tire whose lowest point goes below "
-               "the conveyor's ground stops the run (the snow does not carry it; colliders do not touch each "
-               "other). Defaults: a scaled test tire (400 mm diameter, 125 mm wide, 12 mm tread depth, 12 "
+               "exact at any grid size (a signed distance function). A loaded tire whose lowest point goes more "
+               "than a cell below the conveyor's ground stops the run (the snow does not carry it; colliders do "
+               "not touch each other). Defaults: a scaled test tire (400 mm diameter, 125 mm wide, 12 mm tread depth, 12 "
                "pitches).",
                {
                    {"tread", K::choice, Q::dimensionless, "\"angled_footstep\"", false,

@@ -78,11 +78,12 @@ class SceneStepper {
 
  private:
   // Colliders do not touch each other: a loaded axle whose snow does not carry its load would fall
-  // through the conveyor's ground, so the run stops once the tread's lowest point is below it.
+  // through the conveyor's ground, so the run stops once the tread's lowest point is more than a
+  // cell below it (a cell of snow squeezed under the tread may still push it back up).
   void check_tire_above_ground() const {
     const ColliderBody& tire = sim_.collider(built_.tire);
     const double bottom = tire.collider.center[1] - tire.collider.tire.radius, ground = conveyor_->spec().ground;
-    if (tire.motion != ColliderBody::Motion::loaded_axle || bottom >= ground) return;
+    if (tire.motion != ColliderBody::Motion::loaded_axle || bottom >= ground - sim_.config().dx) return;
     std::ostringstream msg;
     msg << "tire guard: step " << sim_.steps() << ", t = " << sim_.time() << " s: the loaded tire's lowest point (y = "
         << bottom << " m) went through the ground (y = " << ground << " m): the snow does not carry the load";
