@@ -238,9 +238,9 @@ std::vector<SectionSpec> build_schema() {
   s.push_back({"metrics", false,
                "Scene metrics beyond the standard metrics.csv columns. Every collider adds its force and "
                "torque (`NAME_fx` ... `NAME_tz`, on the collider, averaged over the frame); a [tire] adds "
-               "`traction`, `vertical_load`, `axle_torque`, `slip_ratio`, `axle_height`, `displaced` and "
-               "`accumulated` and, with `footprint`, footprint/NNNNN.csv and .png; a [conveyor] adds `injected` "
-               "and `removed`.",
+               "`traction`, `vertical_load`, `axle_torque`, `motion_resistance_coefficient`, `slip_ratio`, "
+               "`axle_height`, `displaced` and `accumulated` (with a [conveyor] also `sinkage`) and, with "
+               "`footprint`, footprint/NNNNN.csv and .png; a [conveyor] adds `injected` and `removed`.",
                {
                    {"displaced_distance", K::number, Q::length, "0.01", false,
                     "a particle farther than this from where the undisturbed ground would have carried it counts "
