@@ -32,9 +32,10 @@ void check(const SceneSpec& s) {
               s.config.dx, grid.active_blocks);
   std::printf("colliders %zu\n", sim.collider_count());
   if (s.tire)
-    std::printf("tire %s, radius %g m, width %g m, tread depth %g m, %d pitches, %s axle, tread speed %g m/s\n",
+    std::printf("tire %s, radius %g m, width %g m, tread depth %g m, %d pitches, %s axle, %s spin, tread speed %g m/s%s\n",
                 s.tire->tread.c_str(), s.tire->radius, s.tire->width, s.tire->tread_depth, s.tire->pitches,
-                s.tire->loaded ? "loaded" : "fixed", s.tire->speed);
+                s.tire->loaded ? "loaded" : "fixed", s.tire->free_spin ? "free" : "driven", s.tire->speed,
+                s.tire->free_spin ? " at t = 0" : "");
   if (s.conveyor) {
     const ConveyorSpec& c = *s.conveyor;
     std::printf("conveyor ground speed %g m/s, snow %g m deep from x = %g to %g m", c.speed, c.depth, c.outflow, c.inflow);

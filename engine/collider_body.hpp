@@ -7,6 +7,12 @@
 //     one rigid degree of freedom under a constant downward load L and the grid's reaction F_y
 //     from the previous step: m dv_y/dt = F_y - L (semi-implicit Euler: velocity, then position).
 //     L is the whole vertical load on the axle, the tire's own weight included (issue 5, "Axle").
+// Spin, independent of the motion above:
+//   prescribed (free_spin false): the angular velocity stays as given;
+//   free_spin: the angular velocity about the world z axis (a tire's axle; the body turns only about
+//     it) is one rigid degree of freedom under the grid's torque T_z about the centre from the
+//     previous step and no applied torque (a towed, free-rolling wheel): I dw_z/dt = T_z, integrated
+//     like the loaded axle (semi-implicit Euler: angular velocity, then rotation).
 // Rotation: R <- Rot(omega dt) R (Rodrigues, kernels/mat3.hpp), in double.
 #pragma once
 
@@ -25,6 +31,8 @@ struct ColliderBody {
   Motion motion = Motion::prescribed;
   double mass = 0;  // loaded_axle
   double load = 0;  // loaded_axle: downward force on the axle (N)
+  bool free_spin = false;
+  double inertia = 0;  // free_spin: moment of inertia about the z axis through the centre (kg m^2)
 
   // Reaction of the grid on the collider in the last step (N, N m about collider.center), and its
   // time integral since the last reset_impulse().
@@ -38,6 +46,7 @@ struct ColliderBody {
   void advance(double dt) {
     Collider<double>& c = collider;
     if (motion == Motion::loaded_axle) c.velocity[1] += dt * (force[1] - load) / mass;
+    if (free_spin) c.angular_velocity[2] += dt * torque[2] / inertia;
     for (int d = 0; d < 3; ++d) c.center[d] += dt * c.velocity[d];
     const Vec3<double> w = {{c.angular_velocity[0], c.angular_velocity[1], c.angular_velocity[2]}};
     const double speed = norm(w);
@@ -67,7 +76,7 @@ struct ColliderBody {
   }
 
   // What moves and accumulates (pose, velocities, reactions), for checkpoints; the shape, its
-  // motion type, mass and load come from the scene.
+  // motion type, mass, load, spin type and inertia come from the scene.
   void save_motion(StateWriter& out) const { motion_fields(out, *this); }
   void load_motion(StateReader& in) { motion_fields(in, *this); }
 

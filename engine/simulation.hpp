@@ -207,6 +207,7 @@ class Simulation {
       throw std::invalid_argument("at most " + std::to_string(kMaxColliders) + " colliders");
     if (c.motion == ColliderBody::Motion::loaded_axle && !(c.mass > 0))
       throw std::invalid_argument("a loaded axle needs a positive mass");
+    if (c.free_spin && !(c.inertia > 0)) throw std::invalid_argument("a free spin needs a positive moment of inertia");
     colliders_.push_back(c);
     return int(colliders_.size()) - 1;
   }

@@ -1,8 +1,8 @@
 // Simulation and conveyor state saved between two steps and loaded into a simulation built
 // afresh from the same scene continue bit for bit as the uninterrupted run (engine/simulation.hpp,
 // save_state and load_state), with every piece of state that a later step reads: particles in
-// memory order after conveyor injection and removal, a loaded axle's motion and reactions, the
-// footprint, loads' ramps, plastic state and the energy budget.
+// memory order after conveyor injection and removal, a loaded axle's motion and reactions, a free
+// spin, the footprint, loads' ramps, plastic state and the energy budget.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -72,6 +72,12 @@ TEST(Checkpoint, ALoadedTireOnAConveyorResumesBitForBit) {
                                                   "tire.axle=\"loaded\"", "tire.load=300",
                                                   "conveyor.speed=20 mph", "tire.speed=20 mph"});
   ASSERT_TRUE(s.conveyor);
+  expect_resume_matches(s, 40, 40);
+}
+
+TEST(Checkpoint, AFreeRollingLoadedTireResumesBitForBit) {
+  const SceneSpec s = scene("../tests/scenes/free_wheel.toml", {"tire.axle=loaded", "tire.load=300", "tire.inertia=0.05"});
+  ASSERT_TRUE(s.tire->free_spin);
   expect_resume_matches(s, 40, 40);
 }
 

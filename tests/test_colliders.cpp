@@ -162,6 +162,25 @@ TEST(ColliderReaction, ALoadedAxleAcceleratesUnderItsNetForce) {
   EXPECT_NEAR(axle.collider.center[1], -0.001, 1e-15);
 }
 
+// A free spin: I dw_z/dt = T_z, angular velocity first, then the rotation turns by the new rate.
+TEST(ColliderReaction, AFreeSpinTurnsUnderItsTorque) {
+  ColliderBody wheel;
+  wheel.free_spin = true;
+  wheel.inertia = 0.5;
+  wheel.collider.angular_velocity[2] = -1;
+  const double f[3] = {0, 0, 0}, t[3] = {0.3, 0.2, -4};  // only the torque about the axle (z) turns it
+  wheel.add_reaction(f, t, 0.01);
+  wheel.advance(0.01);
+  EXPECT_NEAR(wheel.collider.angular_velocity[2], -1.08, 1e-15);  // -1 + (-4) / 0.5 * 0.01
+  EXPECT_EQ(wheel.collider.angular_velocity[0], 0);
+  EXPECT_EQ(wheel.collider.angular_velocity[1], 0);
+  EXPECT_NEAR(wheel.collider.rotation[3], std::sin(-0.0108), 1e-15);  // R(1, 0) after turning by w dt about z
+  ColliderBody driven = wheel;
+  driven.free_spin = false;
+  driven.advance(0.01);
+  EXPECT_EQ(driven.collider.angular_velocity[2], wheel.collider.angular_velocity[2]);  // prescribed: unchanged
+}
+
 }  // namespace
 }  // namespace firn
 

@@ -26,6 +26,7 @@ TEST(Units, ConvertsTheThesisSpellings) {
   EXPECT_DOUBLE_EQ(parse_quantity("0.5 ms", Quantity::time), 5e-4);
   EXPECT_DOUBLE_EQ(parse_quantity("30 deg", Quantity::angle), M_PI / 6);
   EXPECT_DOUBLE_EQ(parse_quantity("  2.5  ", Quantity::length), 2.5);
+  EXPECT_DOUBLE_EQ(parse_quantity("1.4 kg m^2", Quantity::moment_of_inertia), 1.4);
 }
 
 TEST(Units, RejectsAUnitOfAnotherQuantityOrAnUnknownOne) {

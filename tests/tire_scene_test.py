@@ -1,5 +1,6 @@
 """End-to-end checks of the tire experiment (issue 5): scenes/tire_on_snow.toml at preview
-resolution, for each tread and for a loaded axle, and a small `firn sweep` of it.
+resolution, for each tread and for a loaded axle, and a small `firn sweep` of it; the free-rolling
+loaded wheel of scenes/tire_fresh_snow.toml (issue 16) and its sinkage and motion resistance.
 
 Usage: python3 tire_scene_test.py FIRN REPO_ROOT SCRATCH_DIR TEST
 """
@@ -12,15 +13,15 @@ import subprocess
 
 from end_to_end import FIRN, ROOT, SCRATCH, TEST, check, fresh
 SCENE = os.path.join(ROOT, "scenes", "tire_on_snow.toml")
-TIRE_COLUMNS = ["traction", "vertical_load", "axle_torque", "slip_ratio", "axle_height", "peak_pressure",
-                "displaced", "accumulated", "injected", "removed", "tire_fx", "ground_fy"]
+FRESH_SNOW = os.path.join(ROOT, "scenes", "tire_fresh_snow.toml")
+TIRE_COLUMNS = ["traction", "vertical_load", "axle_torque", "motion_resistance_coefficient", "slip_ratio",
+                "axle_height", "sinkage", "peak_pressure", "displaced", "accumulated", "injected", "removed",
+                "tire_fx", "ground_fy"]
 
 
-
-
-def preview_run(name, *sets):
+def preview_run(name, *sets, scene=SCENE, end="10 ms"):
     out = fresh(name)
-    args = [FIRN, "run", SCENE, "--preview", "--out", out, "--set", "simulation.end_time=10 ms"]
+    args = [FIRN, "run", scene, "--preview", "--out", out, "--set", "simulation.end_time=" + end]
     for s in sets:
         args += ["--set", s]
     r = subprocess.run(args, capture_output=True, text=True)
@@ -43,6 +44,12 @@ def test_treads():
         check(float(last["accumulated"]) > 0, f"{tread}: no snow in the tread band")
         check(float(last["injected"]) > 0, f"{tread}: the conveyor injected nothing")
         check(float(last["traction"]) == float(last["tire_fx"]), f"{tread}: traction is not the tire's x force")
+        for row in rows:  # fixed axle: the tread's bottom 25 mm below the snow surface (40 + 50 mm)
+            check(abs(float(row["sinkage"]) - 0.025) < 1e-9, f"{tread}: sinkage {row['sinkage']} is not 25 mm")
+        for row in rows[1:]:  # fixed axle: the wheel load is the snow's vertical force
+            mrc = -float(row["traction"]) / float(row["vertical_load"])
+            check(math.isclose(float(row["motion_resistance_coefficient"]), mrc, rel_tol=1e-6),
+                  f"{tread}: motion_resistance_coefficient is not -traction / vertical_load")
         frame = f"{len(rows) - 1:05d}"
         for ext in ["csv", "png"]:
             check(os.path.isfile(os.path.join(out, "footprint", frame + "." + ext)), f"{tread}: no footprint {ext}")
@@ -55,6 +62,24 @@ def test_loaded_axle():
     _, rows = preview_run("loaded", "tire.axle=loaded", "tire.load=400", "tire.mass=5")
     start, end = float(rows[0]["axle_height"]), float(rows[-1]["axle_height"])
     check(end < start, f"loaded axle did not sink: {start} -> {end}")
+
+
+def test_free_wheel():
+    # The 5 kN free-rolling wheel set 20 mm into the snow: it sinks, the snow resists its motion and
+    # turns it at its own slip.
+    _, rows = preview_run("free_wheel", scene=FRESH_SNOW, end="20 ms")
+    check(abs(float(rows[0]["sinkage"]) - 0.02) < 1e-9, f"initial sinkage {rows[0]['sinkage']} is not 20 mm")
+    check(abs(float(rows[0]["slip_ratio"])) < 1e-12, "a free wheel does not start rolling with the ground")
+    for row in rows[1:]:  # loaded axle: the wheel load is the axle's 5 kN
+        check(math.isclose(float(row["motion_resistance_coefficient"]), -float(row["traction"]) / 5000,
+                           rel_tol=1e-6), "motion_resistance_coefficient is not -traction / load")
+        height = float(row["axle_height"])
+        check(math.isclose(float(row["sinkage"]), 0.31 - (height - 0.38), abs_tol=1e-9),
+              "sinkage is not the snow surface minus the tread's bottom")
+    last = rows[-1]
+    check(float(last["sinkage"]) > 0.03, f"the loaded wheel did not sink: {last['sinkage']}")
+    check(float(last["motion_resistance_coefficient"]) > 0, "the snow does not resist the wheel's motion")
+    check(float(last["slip_ratio"]) != 0, "the free wheel's spin did not change")
 
 
 def test_sweep():
@@ -73,4 +98,4 @@ def test_sweep():
         check(os.path.getsize(os.path.join(out, "plots", "accumulated.png")) > 0, "no accumulated plot")
 
 
-{"treads": test_treads, "loaded_axle": test_loaded_axle, "sweep": test_sweep}[TEST]()
+{"treads": test_treads, "loaded_axle": test_loaded_axle, "free_wheel": test_free_wheel, "sweep": test_sweep}[TEST]()

@@ -42,15 +42,18 @@ struct ColliderSpec {
 
 // The tire of the thesis' experiment (issue 5): a rigid tire collider with a tread pattern on an
 // axle along z at `center`, turning so that its tread at the ground moves toward -x at `speed`
-// (the tire rolls toward +x over ground that moves toward -x).
+// (the tire rolls toward +x over ground that moves toward -x). A free spin (issue 16) starts at
+// the ground's speed and then turns under the snow's torque alone.
 struct TireSpec {
   std::string tread = "angled_footstep";
   Point center = {0, 0, 0};
   double radius = 0, width = 0, tread_depth = 0;
   int pitches = 0;
-  double speed = 0;  // surface speed (m/s)
+  double speed = 0;  // surface speed (m/s); a free spin's at t = 0: the conveyor's speed (0 without one)
   bool loaded = false;
-  double load = 0, mass = 0;  // loaded axle
+  double load = 0, mass = 0;  // loaded axle; the mass also for a free spin
+  bool free_spin = false;
+  double inertia = 0;  // free spin: moment of inertia about the axle (kg m^2)
   WallType boundary = WallType::separate;
   Friction<double> friction{};
 };

@@ -83,6 +83,10 @@ ColliderBody tire_body(const TireSpec& t) {
     body.mass = t.mass;
     body.load = t.load;
   }
+  if (t.free_spin) {
+    body.free_spin = true;
+    body.inertia = t.inertia;
+  }
   return body;
 }
 
@@ -103,6 +107,7 @@ std::vector<Collider<double>> scene_colliders_at(const SceneSpec& scene, double 
   std::vector<Collider<double>> out;
   for (ColliderBody& b : bodies) {
     b.motion = ColliderBody::Motion::prescribed;
+    b.free_spin = false;
     b.advance(time);  // one step of constant motion is exact
     out.push_back(b.collider);
   }

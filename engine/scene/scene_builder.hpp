@@ -30,7 +30,8 @@ ColliderBody tire_body(const TireSpec& spec);
 ColliderBody ground_body(const ConveyorSpec& spec, double dx);
 
 // Every collider of the scene (its [[colliders]], the tire, the conveyor's ground) where it is at
-// `time`: exact for prescribed motion; a loaded axle is shown at its starting height.
+// `time`: exact for prescribed motion; a loaded axle is shown at its starting height, a free spin
+// turning at its starting rate.
 std::vector<Collider<double>> scene_colliders_at(const SceneSpec& scene, double time);
 
 // Which of the simulation's colliders the scene's tire and conveyor ground are (-1: none).

@@ -3,8 +3,14 @@
 //   every collider NAME: NAME_fx, NAME_fy, NAME_fz (force on it, N) and NAME_tx, NAME_ty, NAME_tz
 //     (torque about its centre, N m), averaged over the frame;
 //   a [tire]: traction (its force along +x, the direction it rolls), vertical_load (its force along
-//     +y), axle_torque (about +z), slip_ratio ((surface speed - ground speed) / ground speed, 0
-//     without a conveyor), axle_height, peak_pressure (the footprint's peak, Pa, when written),
+//     +y), axle_torque (about +z), motion_resistance_coefficient (-traction / W: the snow's force
+//     against the rolling direction over the wheel load W, the axle's `load` on a loaded axle and
+//     vertical_load on a fixed one; empty while W <= 0; Wong, Theory of Ground Vehicles, the
+//     coefficient of motion resistance), slip_ratio ((tread speed - ground speed) / ground speed, 0
+//     without a conveyor; a free spin's tread speed at the frame's end), axle_height, sinkage (with
+//     a conveyor: the undisturbed snow surface ground + depth minus the tread's lowest point
+//     axle_height - radius; the depth of the wheel's bottom below the surface it rolls into),
+//     peak_pressure (the footprint's peak, Pa, when written),
 //     displaced (particles farther than metrics.displaced_distance from where the undisturbed
 //     ground would have carried them: x0 - U t e_x; the thesis' Table 5.1) and accumulated
 //     (particles inside the tread's outer radius and width: snow carried in the tread, Figure 5.6);
@@ -76,7 +82,8 @@ class SceneMetrics {
     for (const std::string& n : names_)
       for (const char* c : {"_fx", "_fy", "_fz", "_tx", "_ty", "_tz"}) h += "," + n + c;
     if (built_.tire >= 0) {
-      h += ",traction,vertical_load,axle_torque,slip_ratio,axle_height";
+      h += ",traction,vertical_load,axle_torque,motion_resistance_coefficient,slip_ratio,axle_height";
+      if (conveyor_) h += ",sinkage";
       if (writes_footprint()) h += ",peak_pressure";
       h += ",displaced,accumulated";
     }
@@ -96,13 +103,19 @@ class SceneMetrics {
     }
     if (built_.tire >= 0) {
       const ColliderBody& tire = sim.collider(built_.tire);
+      const TireSpec& t = *scene_.tire;
       const double inv = tire.impulse_time > 0 ? 1 / tire.impulse_time : 0;
       const double ground_speed = conveyor_ ? conveyor_->spec().speed : 0;
-      r += number(tire.impulse[0] * inv) + number(tire.impulse[1] * inv) + number(tire.angular_impulse[2] * inv);
-      r += number(ground_speed > 0 ? (scene_.tire->speed - ground_speed) / ground_speed : 0);
+      const double traction = tire.impulse[0] * inv, vertical = tire.impulse[1] * inv;
+      r += number(traction) + number(vertical) + number(tire.angular_impulse[2] * inv);
+      const double wheel_load = t.loaded ? t.load : vertical;
+      r += wheel_load > 0 ? number(-traction / wheel_load) : ",";
+      const double tread_speed = t.free_spin ? -tire.collider.angular_velocity[2] * t.radius : t.speed;
+      r += number(ground_speed > 0 ? (tread_speed - ground_speed) / ground_speed : 0);
+      const double bottom = tire.collider.center[1] - t.radius;
       r += number(tire.collider.center[1]);
+      if (conveyor_) r += number(conveyor_->spec().ground + conveyor_->spec().depth - bottom);
       if (writes_footprint()) {
-        const TireSpec& t = *scene_.tire;
         const FootprintWindow w{tire.collider.center[0], tire.collider.center[2], t.radius,
                                 0.5 * t.width + 2 * scene_.config.dx};
         r += number(write_footprint(footprint_stem, sim.footprint(), w));

@@ -95,7 +95,10 @@ class TableReader {
       : ctx_(ctx), table_(table), positions_(positions ? *positions : table), section_(section),
         prefix_(std::move(prefix)), out_(out) {}
 
-  void set_filter(const std::string& f) { filter_ = f; }
+  // Keys with an `applies_to` (a shape, a model, a mode) are read only where it is one of the
+  // filters: set_filter starts the list, add_filter adds another (a [tire]'s axle and spin).
+  void set_filter(const std::string& f) { filters_ = {f}; }
+  void add_filter(const std::string& f) { filters_.push_back(f); }
   bool has(const std::string& key) const { return table_.contains(key); }
   std::string full(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
   const toml::source_region& source() const { return table_.source(); }
@@ -201,13 +204,13 @@ class TableReader {
     for (const auto& [name, node] : table_) {
       const std::string key(name.str());
       if (std::find(used_.begin(), used_.end(), key) != used_.end()) continue;
-      std::vector<std::string> applicable;
-      bool elsewhere = false;
+      std::vector<std::string> applicable, elsewhere;
       for (const KeySpec& k : section_.keys) {
-        if (k.applies_to.empty() || k.applies_to == filter_) applicable.push_back(k.key);
-        else if (k.key == key) elsewhere = true;
+        if (applies(k)) applicable.push_back(k.key);
+        else if (k.key == key) elsewhere.push_back(k.applies_to);
       }
-      if (elsewhere) fail(key, "does not apply to '" + filter_ + "'");
+      if (!elsewhere.empty())
+        fail(key, "does not apply to " + quoted(filters_) + " (only to " + quoted(elsewhere) + ")");
       fail(key, "unknown key" + suggestion(key, applicable));
     }
   }
@@ -216,8 +219,16 @@ class TableReader {
   const KeySpec& spec(const std::string& key) {
     used_.push_back(key);
     for (const KeySpec& k : section_.keys)
-      if (k.key == key && (k.applies_to.empty() || k.applies_to == filter_)) return k;
-    throw std::logic_error("scene schema has no key " + section_.name + "." + key + " for '" + filter_ + "'");
+      if (k.key == key && applies(k)) return k;
+    throw std::logic_error("scene schema has no key " + section_.name + "." + key + " for " + quoted(filters_));
+  }
+  bool applies(const KeySpec& k) const {
+    return k.applies_to.empty() || std::find(filters_.begin(), filters_.end(), k.applies_to) != filters_.end();
+  }
+  static std::string quoted(const std::vector<std::string>& v) {
+    std::string s;
+    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", '" : "'") + v[i] + "'";
+    return s;
   }
   // The node given, or the default parsed from the schema; null for an absent optional key.
   const toml::node* value(const KeySpec& k) {
@@ -266,7 +277,7 @@ class TableReader {
   const SectionSpec& section_;
   std::string prefix_;
   toml::table& out_;
-  std::string filter_;
+  std::vector<std::string> filters_;
   std::vector<std::string> used_;
   std::deque<toml::table> defaults_;
 };
@@ -643,13 +654,18 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     t.tread_depth = r.number("tread_depth");
     if (!(t.tread_depth < t.radius)) r.fail("tread_depth", "must be less than the radius");
     t.pitches = int(r.integer("pitches"));
-    t.speed = r.number("speed");
-    const std::string axle = r.choice("axle");
+    const std::string axle = r.choice("axle"), spin = r.choice("spin");
     r.set_filter(axle);
+    r.add_filter(spin);
     t.loaded = axle == "loaded";
-    if (t.loaded) {
-      t.load = r.number("load");
-      t.mass = r.number("mass");
+    t.free_spin = spin == "free";
+    if (!t.free_spin) t.speed = r.number("speed");  // a free spin's: the conveyor's, below
+    if (t.loaded) t.load = r.number("load");
+    if (t.loaded || t.free_spin) t.mass = r.number("mass");
+    if (t.free_spin) {
+      const std::optional<double> inertia = r.optional_number("inertia");
+      t.inertia = inertia ? *inertia : 0.5 * t.mass * t.radius * t.radius;  // a solid disk's
+      o.insert_or_assign("inertia", t.inertia);
     }
     t.boundary = WallType(r.choice_index("boundary") + 1);
     t.friction = read_friction(r);
@@ -692,6 +708,7 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     s.conveyor = c;
     out.insert("conveyor", std::move(o));
   }
+  if (s.tire && s.tire->free_spin) s.tire->speed = s.conveyor ? s.conveyor->speed : 0;  // rolling with the ground
   // [[loads]]
   if (const toml::array* a = table_array("loads")) {
     toml::array o;

@@ -165,8 +165,11 @@ std::vector<SectionSpec> build_schema() {
   s.push_back({"tire", false,
                "The tire of the thesis' experiment: a rigid collider with a tread pattern, its axle along z "
                "through `center`, turning so that the tread at the ground moves toward -x at `speed` (the tire "
-               "rolls toward +x). Its grooves are exact at any grid size (a signed distance function). "
-               "Defaults: a scaled test tire (400 mm diameter, 125 mm wide, 12 mm tread depth, 12 pitches).",
+               "rolls toward +x), or turning freely under the snow's torque (`spin = \"free\"`). Its grooves are "
+               "exact at any grid size (a signed distance function). A loaded tire whose lowest point goes more "
+               "than a cell below the conveyor's ground stops the run (the snow does not carry it; colliders do "
+               "not touch each other). Defaults: a scaled test tire (400 mm diameter, 125 mm wide, 12 mm tread depth, 12 "
+               "pitches).",
                {
                    {"tread", K::choice, Q::dimensionless, "\"angled_footstep\"", false,
                     "tread pattern (see Tread patterns)", -kInf, kInf, false, treads},
@@ -176,8 +179,14 @@ std::vector<SectionSpec> build_schema() {
                    {"tread_depth", K::number, Q::length, "0.012", false, "depth of the grooves", 0, kInf},
                    {"pitches", K::integer, Q::dimensionless, "12", false,
                     "repetitions of the pattern around the circumference", 1, 200},
+                   {"spin", K::choice, Q::dimensionless, "\"driven\"", false,
+                    "driven (the tread turns at `speed`) or free (a towed, free-rolling wheel: its spin about the "
+                    "axle turns under the snow's torque alone, from the spin whose tread speed is the conveyor's "
+                    "ground speed at t = 0)",
+                    -kInf, kInf, false, {"driven", "free"}},
                    {"speed", K::number, Q::velocity, "\"10 mph\"", false,
-                    "surface speed of the tread (the thesis: 5, 10 or 20 mph over ground at 10 mph)", 0, kInf},
+                    "surface speed of the tread (the thesis: 5, 10 or 20 mph over ground at 10 mph)", 0, kInf, false,
+                    {}, "driven"},
                    {"axle", K::choice, Q::dimensionless, "\"fixed\"", false,
                     "fixed (prescribed height) or loaded (moves vertically under `load` and the snow's reaction)",
                     -kInf, kInf, false, {"fixed", "loaded"}},
@@ -185,6 +194,11 @@ std::vector<SectionSpec> build_schema() {
                     0, kInf, false, {}, "loaded"},
                    {"mass", K::number, Q::mass, "10.0", false, "mass of the tire and wheel", 0, kInf, true, {},
                     "loaded"},
+                   {"mass", K::number, Q::mass, "10.0", false,
+                    "mass of the tire and wheel (sets the default `inertia`)", 0, kInf, true, {}, "free"},
+                   {"inertia", K::number, Q::moment_of_inertia, "", false,
+                    "moment of inertia about the axle (default: a solid disk's, mass radius^2 / 2)", 0, kInf, true,
+                    {}, "free"},
                    {"boundary", K::choice, Q::dimensionless, "\"separate\"", false,
                     "sticky, slip or separate (see walls)", -kInf, kInf, false, kBoundaries},
                    {"friction_law", K::choice, Q::dimensionless, "\"velocity_dependent\"", false,
@@ -224,9 +238,9 @@ std::vector<SectionSpec> build_schema() {
   s.push_back({"metrics", false,
                "Scene metrics beyond the standard metrics.csv columns. Every collider adds its force and "
                "torque (`NAME_fx` ... `NAME_tz`, on the collider, averaged over the frame); a [tire] adds "
-               "`traction`, `vertical_load`, `axle_torque`, `slip_ratio`, `axle_height`, `displaced` and "
-               "`accumulated` and, with `footprint`, footprint/NNNNN.csv and .png; a [conveyor] adds `injected` "
-               "and `removed`.",
+               "`traction`, `vertical_load`, `axle_torque`, `motion_resistance_coefficient`, `slip_ratio`, "
+               "`axle_height`, `displaced` and `accumulated` (with a [conveyor] also `sinkage`) and, with "
+               "`footprint`, footprint/NNNNN.csv and .png; a [conveyor] adds `injected` and `removed`.",
                {
                    {"displaced_distance", K::number, Q::length, "0.01", false,
                     "a particle farther than this from where the undisturbed ground would have carried it counts "

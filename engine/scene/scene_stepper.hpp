@@ -10,11 +10,13 @@
 #include <algorithm>
 #include <functional>
 #include <optional>
+#include <sstream>
 
 #include "engine/scene/conveyor.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/scene/scene_builder.hpp"
 #include "engine/simulation.hpp"
+#include "engine/stability_guard.hpp"
 #include "engine/state_stream.hpp"
 #include "kernels/particle_attributes.hpp"
 
@@ -49,10 +51,12 @@ class SceneStepper {
   bool before(double target) const { return sim_.time() < target * (1 - 1e-12); }
 
   // One step toward `target`: the conveyor brings the bed up to the current time, then the
-  // simulation steps by its next time step, cut short so as not to pass `target`.
+  // simulation steps by its next time step, cut short so as not to pass `target`. Throws
+  // StabilityError for a guard stop.
   void step_toward(double target) {
     if (conveyor_) conveyor_->update(sim_, sim_.time());
     sim_.step(std::min(sim_.next_dt(), target - sim_.time()));
+    if (conveyor_ && built_.tire >= 0) check_tire_above_ground();
   }
 
   // The loop's state for a checkpoint (engine/scene/checkpoint.hpp): the simulation's, then the
@@ -73,6 +77,19 @@ class SceneStepper {
   const Conveyor* conveyor() const { return conveyor_ ? &*conveyor_ : nullptr; }  // null without one
 
  private:
+  // Colliders do not touch each other: a loaded axle whose snow does not carry its load would fall
+  // through the conveyor's ground, so the run stops once the tread's lowest point is more than a
+  // cell below it (a cell of snow squeezed under the tread may still push it back up).
+  void check_tire_above_ground() const {
+    const ColliderBody& tire = sim_.collider(built_.tire);
+    const double bottom = tire.collider.center[1] - tire.collider.tire.radius, ground = conveyor_->spec().ground;
+    if (tire.motion != ColliderBody::Motion::loaded_axle || bottom >= ground - sim_.config().dx) return;
+    std::ostringstream msg;
+    msg << "tire guard: step " << sim_.steps() << ", t = " << sim_.time() << " s: the loaded tire's lowest point (y = "
+        << bottom << " m) went through the ground (y = " << ground << " m): the snow does not carry the load";
+    throw StabilityError(msg.str());
+  }
+
   Simulation<T, Backend> sim_;
   BuiltScene built_;
   std::optional<Conveyor> conveyor_;

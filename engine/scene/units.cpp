@@ -61,6 +61,9 @@ constexpr Unit kUnits[] = {
     {"rad/s", Quantity::angular_velocity, 1},
     {"deg/s", Quantity::angular_velocity, kPi / 180},
     {"rpm", Quantity::angular_velocity, 2 * kPi / 60},
+    {"kg m^2", Quantity::moment_of_inertia, 1},
+    {"kg m2", Quantity::moment_of_inertia, 1},
+    {"g cm^2", Quantity::moment_of_inertia, 1e-7},
 };
 
 std::string trim(const std::string& s) {
@@ -91,6 +94,7 @@ const char* quantity_name(Quantity q) {
     case Quantity::force: return "force";
     case Quantity::angle: return "angle";
     case Quantity::angular_velocity: return "angular velocity";
+    case Quantity::moment_of_inertia: return "moment of inertia";
   }
   return "";
 }

@@ -19,6 +19,7 @@ enum class Quantity {
   force,
   angle,             // SI: radians
   angular_velocity,  // SI: rad/s
+  moment_of_inertia,  // SI: kg m^2
 };
 
 // The SI unit written after a value of this quantity, e.g. "Pa" ("" for dimensionless).

@@ -37,7 +37,7 @@ std::string load(const std::string& text, const std::vector<std::string>& overri
 
 std::string check_input(const std::string& input, const std::string& base_scene) {
   if (starts_with(input, "unit:")) {
-    for (int q = 0; q <= int(Quantity::angular_velocity); ++q) try {
+    for (int q = 0; q <= int(Quantity::moment_of_inertia); ++q) try {
         if (!std::isfinite(parse_quantity(input.substr(5), Quantity(q)))) return "the quantity is not finite";
       } catch (const std::invalid_argument&) {
       }

@@ -1,0 +1,78 @@
+// A free-rolling wheel (issue 16; [tire] spin = "free", engine/collider_body.hpp): its spin about
+// the axle turns under the snow's torque alone. On a coarse conveyor bed: a wheel set down
+// without spin and one set down rolling with the ground settle at the same slip, and a loaded
+// wheel that the snow cannot carry stops the run at the ground instead of falling through it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "engine/scene/scene_reader.hpp"
+#include "engine/scene/scene_stepper.hpp"
+#include "kernels/backend/openmp.hpp"
+
+namespace firn {
+namespace {
+
+// A free-rolling slick tire on a fixed axle, 25 mm into a coarse conveyor bed at 10 mph.
+SceneSpec tire_scene(std::vector<std::string> overrides) {
+  SceneOptions o;
+  o.overrides = std::move(overrides);
+  return load_scene(std::string(FIRN_SOURCE_DIR) + "/tests/scenes/free_wheel.toml", o).spec;
+}
+
+TEST(FreeWheel, StartsRollingWithTheGroundAndDefaultsToADisksInertia) {
+  const SceneSpec s = tire_scene({"tire.mass=8"});
+  EXPECT_TRUE(s.tire->free_spin);
+  EXPECT_EQ(s.tire->speed, s.conveyor->speed);
+  EXPECT_DOUBLE_EQ(s.tire->inertia, 0.5 * 8 * s.tire->radius * s.tire->radius);
+  SceneStepper<float, backend::OpenMP> stepper(s, backend::OpenMP(1));
+  EXPECT_DOUBLE_EQ(stepper.sim().collider(stepper.built().tire).collider.angular_velocity[2],
+                   -s.conveyor->speed / s.tire->radius);
+}
+
+// The slip ratio (tread speed - ground speed) / ground speed after running the scene to `end`
+// from the spin w0 about z (the tread at the ground moves toward -x for w0 < 0).
+double slip_after(const SceneSpec& s, double w0, double end) {
+  SceneStepper<float, backend::OpenMP> stepper(s, backend::OpenMP(1));
+  ColliderBody& tire = stepper.sim().collider(stepper.built().tire);
+  tire.collider.angular_velocity[2] = w0;
+  while (stepper.before(end)) stepper.step_toward(end);
+  return (-tire.collider.angular_velocity[2] * s.tire->radius - s.conveyor->speed) / s.conveyor->speed;
+}
+
+// The snow decides a free wheel's spin: set down without spin, the wheel is spun up by the snow
+// the ground drags under it, and started at the ground's speed it slows (the snow ahead of the
+// rigid tread brakes it: a towed wheel skids); both settle at the same slip. A driven wheel keeps
+// the spin it is given.
+TEST(FreeWheel, SettlesAtTheSameSlipFromRestAndFromTheGroundSpeed) {
+  const SceneSpec s = tire_scene({"tire.inertia=0.002"});  // a light wheel settles in a few tens of ms
+  const double rolling = -s.conveyor->speed / s.tire->radius;
+  const double from_rest = slip_after(s, 0, 0.1), from_rolling = slip_after(s, rolling, 0.1);
+  EXPECT_GT(from_rest, -0.8);       // spun up from -1
+  EXPECT_LT(from_rolling, -0.05);   // slowed from 0
+  EXPECT_NEAR(from_rest, from_rolling, 0.1);
+  const SceneSpec driven = tire_scene({"tire.spin=driven", "tire.speed=10 mph"});
+  EXPECT_EQ(slip_after(driven, 0, 0.01), -1);
+}
+
+// 4 kN on a 10 kg wheel, far more than 50 mm of the thesis' soft snow holds.
+TEST(FreeWheel, ALoadedWheelTheSnowCannotCarryStopsAtTheGround) {
+  const SceneSpec s =
+      tire_scene({"tire.axle=loaded", "tire.load=4000", "materials.snow.preset=thesis_soft_snow"});
+  SceneStepper<float, backend::OpenMP> stepper(s, backend::OpenMP(1));
+  try {
+    while (stepper.before(0.5)) stepper.step_toward(0.5);
+    FAIL() << "the tire fell through the ground";
+  } catch (const StabilityError& e) {
+    EXPECT_NE(std::string(e.what()).find("went through the ground"), std::string::npos) << e.what();
+  }
+  const ColliderBody& tire = stepper.sim().collider(stepper.built().tire);
+  const double below = s.conveyor->ground - (tire.collider.center[1] - s.tire->radius);
+  EXPECT_GT(below, s.config.dx);
+  EXPECT_LT(below, 1.5 * s.config.dx);  // stopped there, not after falling on
+}
+
+}  // namespace
+}  // namespace firn
