@@ -14,9 +14,12 @@
 //     displaced (particles farther than metrics.displaced_distance from where the undisturbed
 //     ground would have carried them: x0 - U t e_x; the thesis' Table 5.1) and accumulated
 //     (particles inside the tread's outer radius and width: snow carried in the tread, Figure 5.6);
-//   a [conveyor]: injected and removed (particles, since the start).
+//   a [conveyor]: injected and removed (particles, since the start);
+//   metrics.fragments: fragments and largest_fragment (engine/fragments.hpp), the particles' connected
+//     clusters of at least metrics.fragment_min_particles, linked closer than fragment_link_cells dx.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -24,6 +27,7 @@
 #include <vector>
 
 #include "engine/scene/conveyor.hpp"
+#include "engine/fragments.hpp"
 #include "engine/output/footprint_writer.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/scene/scene_builder.hpp"
@@ -88,6 +92,7 @@ class SceneMetrics {
       h += ",displaced,accumulated";
     }
     if (conveyor_) h += ",injected,removed";
+    if (scene_.metrics.fragments) h += ",fragments,largest_fragment";
     return h;
   }
 
@@ -125,11 +130,24 @@ class SceneMetrics {
       r += number(double(n.displaced)) + number(double(n.accumulated));
     }
     if (conveyor_) r += number(double(conveyor_->injected())) + number(double(conveyor_->removed()));
+    if (scene_.metrics.fragments) {
+      const FragmentCount f = count_particle_fragments(sim);
+      r += number(double(f.fragments)) + number(double(f.largest));
+    }
     for (std::size_t c = 0; c < sim.collider_count(); ++c) sim.collider(int(c)).reset_impulse();
     return r;
   }
 
  private:
+  FragmentCount count_particle_fragments(Simulation<T, Backend>& sim) const {
+    const ParticleView<T> pv = sim.particles();
+    std::vector<std::array<double, 3>> x(pv.n);
+    for (std::size_t p = 0; p < pv.n; ++p)
+      for (int d = 0; d < 3; ++d) x[p][d] = double(pv.x[d][p]);
+    return count_fragments(x, scene_.metrics.fragment_link_cells * scene_.config.dx,
+                           std::size_t(scene_.metrics.fragment_min_particles));
+  }
+
   SnowCounts count_snow(Simulation<T, Backend>& sim, double ground_speed) const {
     const ParticleView<T> pv = sim.particles();
     const Collider<double>& c = sim.collider(built_.tire).collider;

@@ -733,6 +733,9 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     TableReader m(ctx, subtable(ctx, root, "metrics", empty), scene_section("metrics"), "metrics", mo);
     s.metrics.displaced_distance = m.number("displaced_distance");
     s.metrics.footprint = m.boolean("footprint");
+    s.metrics.fragments = m.boolean("fragments");
+    s.metrics.fragment_link_cells = m.number("fragment_link_cells");
+    s.metrics.fragment_min_particles = int(m.integer("fragment_min_particles"));
     m.finish();
     out.insert("metrics", std::move(mo));
     TableReader r(ctx, subtable(ctx, root, "render", empty), scene_section("render"), "render", ro);

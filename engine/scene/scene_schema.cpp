@@ -240,7 +240,8 @@ std::vector<SectionSpec> build_schema() {
                "torque (`NAME_fx` ... `NAME_tz`, on the collider, averaged over the frame); a [tire] adds "
                "`traction`, `vertical_load`, `axle_torque`, `motion_resistance_coefficient`, `slip_ratio`, "
                "`axle_height`, `displaced` and `accumulated` (with a [conveyor] also `sinkage`) and, with "
-               "`footprint`, footprint/NNNNN.csv and .png; a [conveyor] adds `injected` and `removed`.",
+               "`footprint`, footprint/NNNNN.csv and .png; a [conveyor] adds `injected` and `removed`; "
+               "`fragments` adds `fragments` and `largest_fragment`.",
                {
                    {"displaced_distance", K::number, Q::length, "0.01", false,
                     "a particle farther than this from where the undisturbed ground would have carried it counts "
@@ -248,6 +249,15 @@ std::vector<SectionSpec> build_schema() {
                     0, kInf, true},
                    {"footprint", K::boolean, Q::dimensionless, "true", false,
                     "write the tire's contact pressure map every frame"},
+                   {"fragments", K::boolean, Q::dimensionless, "false", false,
+                    "add `fragments` (connected clusters of at least fragment_min_particles particles) and "
+                    "`largest_fragment` (its particles) every frame: does the snow break into pieces?"},
+                   {"fragment_link_cells", K::number, Q::dimensionless, "1.0", false,
+                    "particles closer than this many grid cells belong to one fragment (one cell: they no longer "
+                    "act on each other through the grid once farther apart)",
+                    0, 10, true},
+                   {"fragment_min_particles", K::integer, Q::dimensionless, "10", false,
+                    "clusters with fewer particles are spray, not fragments", 1, 1e9},
                }});
   s.push_back({"render", false, "How frames are drawn when rendering is on (`firn run --render`).",
                {
