@@ -1,7 +1,8 @@
 // Fragments: the connected clusters of particles, two particles linked when closer than `link`
 // (issue 16, item 5: does a snowball break into pieces that fly apart?). MPM particles interact
-// only through grid nodes, within about one cell of each other for the quadratic B-spline, so a
-// link of one cell (the scene default) counts pieces that no longer act on each other. Clusters of
+// only through grid nodes, a quadratic B-spline reaching 1.5 cells from its particle; the scene
+// default link is 1.5 cells, above the particle spacing at any particles_per_cell (a link of one
+// cell splits a one-particle-per-cell lattice into single particles). Clusters of
 // fewer than `min_particles` (spray) are not counted as fragments. A uniform hash grid of cell
 // `link` finds the neighbours (27 cells each) and a union-find with path halving joins them
 // (Tarjan, J. ACM 22(2):215, 1975): O(n) expected.

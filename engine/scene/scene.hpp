@@ -72,7 +72,7 @@ struct MetricsSpec {
   double displaced_distance = 0.01;  // a particle this far from its undisturbed place is displaced
   bool footprint = true;             // the tire's contact pressure map per frame
   bool fragments = false;            // count the particles' connected clusters per frame
-  double fragment_link_cells = 1;    // particles closer than this many cells are connected
+  double fragment_link_cells = 1.5;  // particles closer than this many cells are connected
   int fragment_min_particles = 10;   // smaller clusters are spray, not fragments
 };
 

@@ -252,9 +252,9 @@ std::vector<SectionSpec> build_schema() {
                    {"fragments", K::boolean, Q::dimensionless, "false", false,
                     "add `fragments` (connected clusters of at least fragment_min_particles particles) and "
                     "`largest_fragment` (its particles) every frame: does the snow break into pieces?"},
-                   {"fragment_link_cells", K::number, Q::dimensionless, "1.0", false,
-                    "particles closer than this many grid cells belong to one fragment (one cell: they no longer "
-                    "act on each other through the grid once farther apart)",
+                   {"fragment_link_cells", K::number, Q::dimensionless, "1.5", false,
+                    "particles closer than this many grid cells belong to one fragment (1.5: the reach of a "
+                    "quadratic B-spline, and more than the particle spacing at any particles_per_cell)",
                     0, 10, true},
                    {"fragment_min_particles", K::integer, Q::dimensionless, "10", false,
                     "clusters with fewer particles are spray, not fragments", 1, 1e9},

@@ -9,11 +9,10 @@
 // initial density (Richmond 1995, CRREL Report 95-7: final density against peak contact pressure
 // for snow of initial density 0.11-0.25 Mg/m^3; fitted in data/snow/). Writing it in rho_P rather than in eps makes one law serve every initial density:
 // p0 = [p_c0 e^(-rho0 / rho_h)] e^(rho_P / rho_h). Its scale rho_h is a density, its own parameter
-// and independent of the elastic bulk modulus (cf. Gaume et al. 2018, Nature Communications 9:3047,
-// where p0 = K sinh(xi max(-ln J_P, 0)) ties the two together). The dilation branch removes the
-// cohesion beta p0 linearly over a plastic dilation eps_s, as the thesis' future work asks
-// (section 6.3: softening) and as CD-MPM's softening of p0 on dilation does (Wolper et al. 2019,
-// ACM TOG 38(4):119, sec. 5).
+// and independent of the elastic bulk modulus (cf. the NACC hardening of Wolper et al. 2019, ACM
+// TOG 38(4):119, p0 = K sinh(xi max(-ln J_P, 0)), which ties the two together and leaves no
+// strength once J_P > 1). The dilation branch removes the cohesion beta p0 linearly over a
+// plastic dilation eps_s, the softening the thesis' future work asks for (section 6.3).
 #pragma once
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // Cam-clay snow: snow that compacts, has cohesion and breaks (DESIGN.md section 4, snow_cam_clay;
 // issue 16). The modified Cam-clay yield surface of Gaume et al. 2018 (Nature Communications
 // 9:3047, "Dynamic anticrack propagation in snow") with the non-associative return mapping of
-// Wolper et al. 2019 (CD-MPM, ACM TOG 38(4):119, sec. 5 "NACC"), written here in the principal
+// Wolper et al. 2019 (CD-MPM, ACM TOG 38(4):119, "NACC"), written here in the principal
 // space of the elastic left Cauchy-Green tensor.
 //
 // Storage: the engine's F holds F_E; the plastic state keeps J_P = det F_P, so J = det(F_E) J_P.
@@ -13,12 +13,12 @@
 // data give: p = p_tau / J, q = q_tau / J. (A surface in tau, as in CD-MPM's code, would put the
 // measured pressure of snow compacted to J_P = 0.4 at 2.5 times its yield pressure.) J is fixed
 // during a return, so the surface in tau is the Cauchy one with p0 scaled by J.
-// Yield (Gaume et al. 2018, eq. 2):  y(p, q) = (1 + 2 beta) q^2 + M^2 (p + beta p0)(p - p0) <= 0,
+// Yield (Gaume et al. 2018):  y(p, q) = (1 + 2 beta) q^2 + M^2 (p + beta p0)(p - p0) <= 0,
 // an ellipse in (p, q) from the tensile tip p = -beta p0 to the compressive tip p = p0, with M the
 // slope of the critical state line and beta p0 the cohesion; p0 hardens with compaction and
 // softens with dilation (kernels/constitutive/cam_clay_hardening.hpp).
 //
-// Return mapping for a trial state with y > 0 (Wolper et al. 2019, Algorithm 2, with implicit
+// Return mapping for a trial state with y > 0 (after Wolper et al. 2019, with implicit
 // hardening at the tips):
 //   p > p0 (beyond the compressive tip): project to the tip, q = 0 and p = p0(J_P,new), where
 //     J_P,new = J / J_E(p_tau) and J_E(p_tau) = sqrt(1 - 2 p_tau / K): one scalar equation, solved by
