@@ -1,4 +1,4 @@
-// Cam-clay snow: snow that compacts, has cohesion and breaks (DESIGN.md section 4, snow_cam_clay;
+// Cam-clay snow: snow that compacts, has cohesion and softens (DESIGN.md section 4, snow_cam_clay;
 // issue 16). The modified Cam-clay yield surface of Gaume et al. 2018 (Nature Communications
 // 9:3047, "Dynamic anticrack propagation in snow") with the non-associative return mapping of
 // Wolper et al. 2019 (CD-MPM, ACM TOG 38(4):119, "NACC"), written here in the principal
@@ -123,9 +123,8 @@ struct SnowCamClay {
   }
 
   // The Kirchhoff pressure of a tip projection: the root of g(p) = p - a p0(eps(p)) with a = J_t
-  // (compressive tip) or a = -beta J_t (tensile tip), J_t the total J, where
-  // eps(p) = -ln J_P,new = eps_n + ln(J_E(p) / J) is the
-  // plastic compaction after the return. g(p_tr) has the sign of p_tr - a p0(eps_n) and g(0) =
+  // (compressive tip) or a = -beta J_t (tensile tip), J_t the total J, where eps(p) = -ln J_P,new
+  // = eps_n + ln(J_E(p) / J) is the plastic compaction after the return. g(p_tr) has the sign of p_tr - a p0(eps_n) and g(0) =
   // -a p0 the other one, so [min(0, p_tr), max(0, p_tr)] brackets the root; safeguarded Newton
   // (Press et al., Numerical Recipes 3rd ed., sec. 9.4 "rtsafe"), as in solve_j2_return.
   FIRN_HD T tip_pressure(T a, T p_tr, T J, T eps_n) const {
