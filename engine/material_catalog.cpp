@@ -96,7 +96,7 @@ const std::vector<MaterialPreset>& material_presets() {
                           {{"density", rho},
                            {"E", E},
                            {"nu", 0.2},
-                           {"M", 1},
+                           {"M", 1.722},
                            {"beta", beta},
                            {"p0", p0},
                            {"hardening_density", 83.06},
@@ -113,13 +113,13 @@ const std::vector<MaterialPreset>& material_presets() {
       snow("thesis_hard_snow", "thesis Table 4.3, hard snow", 400, 78e3, 58.3e3, 15),
       snow("thesis_soft_snow", "thesis Table 4.3, soft snow", 330, 26.7e3, 20e3, 10),
       // Cam-clay snow calibrated on laboratory data only: data/snow/fit_cam_clay.py prints these
-      // lines (E: Scapozza 2004; p0 and hardening_density: CRREL Report 95-7; beta: Sigrist 2006;
-      // M = 1 is a placeholder until its plate-sinkage calibration; docs/snow.md). packed_snow is
-      // at the thesis' hard snow density (Table 4.3).
-      cam_clay("fresh_snow", "fresh snow, 220 kg/m^3 (data/snow/fit_cam_clay.py)", 220, 4.968e+06, 1.423, 5179),
+      // lines (E: Scapozza 2004; hardening_density and, in confined compression, p0: CRREL Report
+      // 95-7; beta with p0: Sigrist 2006's tensile strength; M: the angle of repose of granular
+      // snow; docs/snow.md). packed_snow is at the thesis' hard snow density (Table 4.3).
+      cam_clay("fresh_snow", "fresh snow, 220 kg/m^3 (data/snow/fit_cam_clay.py)", 220, 4.968e+06, 2.175, 6283),
       cam_clay("soft_cam_clay_snow", "the thesis' soft snow density, 330 kg/m^3 (data/snow/fit_cam_clay.py)", 330,
-               2.558e+07, 1.018, 1.947e+04),
-      cam_clay("packed_snow", "packed snow, 400 kg/m^3 (data/snow/fit_cam_clay.py)", 400, 7.26e+07, 0.7009, 4.523e+04),
+               2.558e+07, 1.366, 1.898e+04),
+      cam_clay("packed_snow", "packed snow, 400 kg/m^3 (data/snow/fit_cam_clay.py)", 400, 7.26e+07, 0.6922, 3.887e+04),
       {"thesis_tire_rubber",
        "mooney_rivlin",
        "thesis sec. 4.1.2: E = 1e7 Pa, nu = 0.49, 0.93 g/cm^3 (its ref. 25)",

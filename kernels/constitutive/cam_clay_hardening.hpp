@@ -28,25 +28,11 @@ struct CamClayHardening {
   T rho_h;  // compaction hardening density scale (kg/m^3)
   T eps_s;  // plastic dilation -ln J_P that removes all strength
 
-  // p0(eps) and its slope d p0 / d eps.
-  FIRN_HD void evaluate(T eps, T& p0, T& slope) const {
-    if (eps >= T(0)) {
-      const T rho = rho0 * std::exp(eps);
-      p0 = p_c0 * std::exp((rho - rho0) / rho_h);
-      slope = p0 * rho / rho_h;
-    } else if (eps > -eps_s) {
-      p0 = p_c0 * (T(1) + eps / eps_s);
-      slope = p_c0 / eps_s;
-    } else {
-      p0 = T(0);
-      slope = T(0);
-    }
-  }
-
+  // p0(eps).
   FIRN_HD T pressure(T eps) const {
-    T p0, slope;
-    evaluate(eps, p0, slope);
-    return p0;
+    if (eps >= T(0)) return p_c0 * std::exp((rho0 * std::exp(eps) - rho0) / rho_h);
+    if (eps > -eps_s) return p_c0 * (T(1) + eps / eps_s);
+    return T(0);
   }
 };
 
