@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "engine/scene/scene_builder.hpp"
+#include "engine/scene/scene_materials.hpp"
 #include "viz/collider_sdf.hpp"
 #include "viz/vtp_reader.hpp"
 
@@ -40,7 +41,8 @@ VtpFrame::VtpFrame(const std::string& path, int frame, const SceneSpec& scene, c
   const VtpFile f = read_vtp(path);
   const auto material = f.arrays.find("material");
   if (material == f.arrays.end()) throw std::runtime_error(path + ": no 'material' array");
-  const int materials = int(scene.materials.size());
+  const SceneMaterials engine_materials(scene);  // the .vtp holds engine materials: a varied table's levels
+  const int materials = int(engine_materials.engine().size());
   // Stable counting sort by material, so each material is one run of particles.
   std::vector<std::size_t> count(std::size_t(materials) + 1, 0);
   for (double m : material->second.values) {
@@ -49,7 +51,7 @@ VtpFrame::VtpFrame(const std::string& path, int frame, const SceneSpec& scene, c
   }
   for (int m = 0; m < materials; ++m) {
     count[std::size_t(m) + 1] += count[std::size_t(m)];
-    materials_.push_back({count[std::size_t(m)], count[std::size_t(m) + 1], m});
+    materials_.push_back({count[std::size_t(m)], count[std::size_t(m) + 1], engine_materials.table_of(m)});
   }
   std::vector<std::size_t> order(f.points);
   for (std::size_t i = 0; i < f.points; ++i) order[count[std::size_t(material->second.values[i])]++] = i;

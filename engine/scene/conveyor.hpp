@@ -13,6 +13,7 @@
 
 #include "engine/particle_fill.hpp"
 #include "engine/scene/scene.hpp"
+#include "engine/scene/scene_materials.hpp"
 #include "engine/simulation.hpp"
 #include "engine/state_stream.hpp"
 #include "kernels/hd.hpp"
@@ -25,7 +26,7 @@ class Conveyor {
   static constexpr double kMargin = 4;  // cells
 
   Conveyor(const SceneSpec& scene, const ConveyorSpec& spec)
-      : spec_(spec), origin_(scene.config.domain_min), dx_(scene.config.dx), per_axis_(scene.per_axis()),
+      : spec_(spec), materials_(scene), origin_(scene.config.domain_min), dx_(scene.config.dx), per_axis_(scene.per_axis()),
         domain_min_(scene.config.domain_min), domain_max_(scene.config.domain_max),
         volume_(std::pow(scene.config.dx / scene.per_axis(), 3)) {
     const double h = dx_ / per_axis_;
@@ -59,10 +60,11 @@ class Conveyor {
     std::vector<Point> now = at_rest;
     for (Point& p : now) p[0] -= shift;
     const std::size_t first = sim.particle_count();
-    sim.add_particles(spec_.material, now, Point{-spec_.speed, 0, 0}, volume_);
+    const std::vector<std::size_t> order = add_table_particles(
+        sim, materials_, spec_.material, at_rest, now, std::vector<Point>(now.size(), Point{-spec_.speed, 0, 0}), volume_);
     const ParticleView<T> pv = sim.particles();
     if (pv.x0[0])
-      for (std::size_t i = 0; i < at_rest.size(); ++i) pv.x0[0][first + i] = T(at_rest[i][0]);
+      for (std::size_t k = 0; k < order.size(); ++k) pv.x0[0][first + k] = T(at_rest[order[k]][0]);
     injected_ += long(now.size());
   }
 
@@ -89,6 +91,7 @@ class Conveyor {
   }
 
   ConveyorSpec spec_;
+  SceneMaterials materials_;  // the bed's levels, where its table is varied
   Point origin_;
   double dx_;
   int per_axis_;

@@ -10,6 +10,7 @@
 
 #include "engine/materials.hpp"
 #include "engine/scene/body_shape.hpp"
+#include "engine/scene/material_variation.hpp"
 #include "engine/simulation.hpp"
 
 namespace firn {
@@ -108,7 +109,8 @@ struct SceneSpec {
   double end_time = 0;
   double frame_interval = 0;
   std::string precision = "float";
-  std::vector<MaterialInfo> materials;
+  std::vector<MaterialInfo> materials;                // one per [materials.NAME] table, in name order
+  std::vector<MaterialVariation> material_variations;  // per table: its `vary` (none: uniform)
   std::vector<BodySpec> bodies;
   std::vector<ColliderSpec> colliders;
   std::vector<LoadSpec> loads;

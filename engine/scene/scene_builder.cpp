@@ -2,23 +2,11 @@
 
 #include <cmath>
 
+#include "engine/splitmix64.hpp"
 #include "engine/tread_patterns.hpp"
 
 namespace firn {
 namespace {
-
-// SplitMix64 (Steele, Lea and Flood 2014): a portable, seedable stream, so jittered scenes are the
-// same on every platform (std::uniform_real_distribution is implementation-defined).
-struct SplitMix64 {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return double(next() >> 11) * 0x1.0p-53; }  // [0, 1)
-};
 
 // A rotation whose body y axis is the unit vector n (the other two axes complete a right-handed frame).
 void frame_with_y_axis(const Point& n, double r[9]) {

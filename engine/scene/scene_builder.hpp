@@ -10,6 +10,7 @@
 #include "engine/collider_body.hpp"
 #include "engine/scene/conveyor.hpp"
 #include "engine/scene/scene.hpp"
+#include "engine/scene/scene_materials.hpp"
 #include "engine/scene/scene_reader.hpp"
 #include "engine/simulation.hpp"
 
@@ -48,12 +49,14 @@ inline double particle_volume(const SceneSpec& scene) {
 
 template <class T, class Backend>
 BuiltScene build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
-  for (const MaterialInfo& m : scene.materials) sim.add_material(m);
+  const SceneMaterials materials(scene);
+  for (const MaterialInfo& m : materials.engine()) sim.add_material(m);
   if (scene.tire) sim.enable(Attribute::x0);  // the displaced-snow metric compares with it
   std::vector<Point> positions, velocities;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     fill_body(scene, b, positions, velocities);
-    sim.add_particles(scene.bodies[b].material, positions, velocities, particle_volume(scene));
+    add_table_particles(sim, materials, scene.bodies[b].material, positions, positions, velocities,
+                        particle_volume(scene));
   }
   BuiltScene built;
   for (const ColliderSpec& c : scene.colliders) sim.add_collider(collider_body(c));
@@ -71,7 +74,8 @@ BuiltScene build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
                                }),
                 bed.end());
     }
-    sim.add_particles(c.material, bed, Point{-c.speed, 0, 0}, particle_volume(scene));
+    add_table_particles(sim, materials, c.material, bed, bed, std::vector<Point>(bed.size(), Point{-c.speed, 0, 0}),
+                        particle_volume(scene));
   }
   for (const LoadSpec& l : scene.loads) sim.add_load(l.region_min, l.region_max, l.force, l.ramp_time);
   return built;

@@ -192,6 +192,13 @@ class TableReader {
     out_.insert_or_assign(key, n->as_string()->get());
     return n->as_string()->get();
   }
+  // An optional sub-table (null where absent); the caller reads it with a TableReader of its own.
+  const toml::table* table(const std::string& key) {
+    const KeySpec& k = spec(key);
+    const toml::node* n = value(k);
+    if (n && !n->is_table()) fail(key, "expected a table, got " + type_name(*n));
+    return n ? n->as_table() : nullptr;
+  }
   const toml::array& tables(const std::string& key) {
     const KeySpec& k = spec(key);
     const toml::node* n = value(k);
@@ -394,8 +401,39 @@ void apply_override(Context& ctx, toml::table& root, const std::string& assignme
   ctx.overrides[key] = assignment;
 }
 
+// A material's `vary` table (engine/scene/material_variation.hpp), checked at every level.
+MaterialVariation read_variation(const Context& ctx, TableReader& material, const toml::table& vary,
+                                 const toml::table& given, const MaterialInfo& info, toml::table& out) {
+  const toml::node* positions = given.get("vary");
+  const SectionSpec& section = scene_section("materials.NAME.vary");
+  TableReader r(ctx, vary, section, "materials." + info.name + ".vary", out,
+                positions && positions->is_table() ? positions->as_table() : nullptr);
+  r.set_filter(info.model);
+  MaterialVariation v;
+  v.scale = r.number("scale");
+  v.seed = std::uint64_t(r.integer("seed"));
+  v.levels = int(r.integer("levels"));
+  for (const KeySpec& k : section.keys) {
+    const bool amplitude = k.key != "scale" && k.key != "seed" && k.key != "levels";
+    if (amplitude && (k.applies_to.empty() || k.applies_to == info.model) && r.has(k.key))
+      v.amplitudes[k.key] = r.number(k.key);
+  }
+  r.finish();
+  if (!v.varied()) material.fail("vary", "names no parameter to vary (e.g. density = 0.1)");
+  for (int level = 0; level < v.levels; ++level) {
+    try {
+      make_material_model<double>(material_level(info, v, level));  // constraints between parameters
+    } catch (const VariationError& e) {
+      r.fail(e.key, e.what());
+    } catch (const std::invalid_argument& e) {
+      material.fail("vary", "level " + std::to_string(level) + ": " + e.what());
+    }
+  }
+  return v;
+}
+
 MaterialInfo read_material(const Context& ctx, const std::string& name, const toml::table& given, toml::table& out,
-                           std::optional<Point>& color) {
+                           std::optional<Point>& color, MaterialVariation& variation) {
   const std::string prefix = "materials." + name;
   // Merge the preset's values under the scene's keys.
   toml::table merged = given;
@@ -445,11 +483,17 @@ MaterialInfo read_material(const Context& ctx, const std::string& name, const to
   if (color)
     for (double c : *color)
       if (!(c >= 0 && c <= 1)) r.fail("color", "each component must be in [0, 1]");
+  const toml::table* vary = r.table("vary");
   r.finish();
   try {  // constraints between parameters (e.g. G2 < G) are the factory's to check
     make_material_model<double>(info);
   } catch (const std::invalid_argument& e) {
     r.fail("model", e.what());
+  }
+  if (vary) {
+    toml::table vo;
+    variation = read_variation(ctx, r, *vary, given, info, vo);
+    out.insert_or_assign("vary", std::move(vo));
   }
   return info;
 }
@@ -555,7 +599,9 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
       if (!node.is_table()) ctx.fail(&node, t.source(), "materials." + n, "expected a table [materials." + n + "]");
       toml::table mo;
       s.render.material_colors.emplace_back();
-      s.materials.push_back(read_material(ctx, n, *node.as_table(), mo, s.render.material_colors.back()));
+      s.material_variations.emplace_back();
+      s.materials.push_back(
+          read_material(ctx, n, *node.as_table(), mo, s.render.material_colors.back(), s.material_variations.back()));
       o.insert(n, std::move(mo));
     }
     out.insert("materials", std::move(o));

@@ -13,6 +13,7 @@
 #include "engine/output/atomic_file.hpp"
 #include "engine/output/vtp_writer.hpp"
 #include "engine/scene/checkpoint.hpp"
+#include "engine/scene/scene_materials.hpp"
 #include "engine/scene/scene_metrics.hpp"
 #include "engine/scene/scene_run.hpp"
 #include "engine/scene/scene_stepper.hpp"
@@ -30,8 +31,8 @@ using Clock = std::chrono::steady_clock;
 inline double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 template <class T, class Backend>
-FrameDescription describe_frame(const Simulation<T, Backend>& sim, const ParticleView<T>& view, int frame,
-                                const std::vector<Collider<double>>& colliders) {
+FrameDescription describe_frame(const Simulation<T, Backend>& sim, const SceneMaterials& materials,
+                                const ParticleView<T>& view, int frame, const std::vector<Collider<double>>& colliders) {
   FrameDescription f;
   f.frame = frame;
   f.time = sim.time();
@@ -39,7 +40,7 @@ FrameDescription describe_frame(const Simulation<T, Backend>& sim, const Particl
   else f.particles_double = &view;
   for (int m = 0; m < int(sim.material_count()); ++m) {
     const ParticleRange r = sim.material_range(m);
-    f.materials.push_back({r.begin, r.end, m});
+    f.materials.push_back({r.begin, r.end, materials.table_of(m)});
   }
   f.colliders = &colliders;
   return f;
@@ -58,6 +59,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
     sim.enable_energy_budget();
   };
   SceneStepper<T, Backend> stepper(scene, backend, stepper_options);
+  const SceneMaterials materials(scene);  // the scene's table of each engine material, for frames
   Simulation<T, Backend>& sim = stepper.sim();
 
   RunSummary summary;
@@ -114,7 +116,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
       const ParticleView<T> view = sim.particles();
       std::vector<Collider<double>> colliders;  // where they are now
       for (std::size_t c = 0; c < sim.collider_count(); ++c) colliders.push_back(sim.collider(int(c)).collider);
-      options.on_frame(describe_frame(sim, view, frame, colliders));
+      options.on_frame(describe_frame(sim, materials, view, frame, colliders));
     }
   };
   // The checkpoint of the run as it stands, heading for output frame `next_frame`.

@@ -22,6 +22,38 @@ KeySpec wall_face(const std::string& face) {
           -kInf, kInf, false, kWallTypes};
 }
 
+// [materials.NAME] vary (engine/scene/material_variation.hpp): the noise's keys, then a relative
+// amplitude for every numeric parameter a model reads.
+SectionSpec vary_section() {
+  const auto amplitude = [](const std::string& key, const std::string& model) {
+    return KeySpec{key, K::number, Q::dimensionless, "", false,
+                   "relative amplitude: " + key + " = nominal (1 + amplitude n(x))", -1, 1, true, {}, model, true};
+  };
+  SectionSpec vary{
+      "materials.NAME.vary", false,
+      "An inline table `vary = { ... }` in a [materials.NAME] table: each parameter it lists takes the value "
+      "nominal (1 + amplitude n(x)) at the particle's rest position x, with n a smooth, seeded noise field in "
+      "[-1, 1] (lattice value noise with correlation length `scale`: mean 0, standard deviation about 0.4; "
+      "engine/noise_field.hpp). One field per table, shared by all its varied parameters: with positive "
+      "amplitudes on density and strength, denser snow is also stronger; a negative amplitude anti-correlates. "
+      "n is quantised into `levels` equal bins of [-1, 1], each an engine material with the bin's centre "
+      "value of n (named NAME~0 ... NAME~(levels - 1) in messages, `firn check` and the .vtp `material` "
+      "array). A varied modulus keeps its partner (E keeps nu, K keeps G and the reverse); at most two of E, "
+      "nu, K, G vary. The same seed and scale give the same field in every table.",
+      {
+          {"scale", K::number, Q::length, "", true, "correlation length of the noise (its lattice spacing)", 0,
+           kInf, true},
+          {"seed", K::integer, Q::dimensionless, "0", false, "seed of the noise field", 0, kInf},
+          {"levels", K::integer, Q::dimensionless, "8", false,
+           "quantisation bins of the noise, one engine material each", 2, 64},
+      }};
+  for (const char* key : {"density", "E", "nu", "K", "G"}) vary.keys.push_back(amplitude(key, ""));
+  for (const MaterialModelSpec& m : material_model_specs())
+    for (const MaterialParameter& p : m.parameters)
+      if (p.choices.empty()) vary.keys.push_back(amplitude(p.key, m.name));
+  return vary;
+}
+
 std::vector<SectionSpec> build_schema() {
   std::vector<SectionSpec> s;
   s.push_back({"simulation", false, "The domain, the grid, time stepping and the transfer scheme.",
@@ -77,6 +109,9 @@ std::vector<SectionSpec> build_schema() {
                             {"G", K::number, Q::pressure, "", false, "shear modulus", 0, kInf, true},
                             {"color", K::vector3, Q::dimensionless, "", false,
                              "render colour [r, g, b], each in [0, 1] (default: a built-in palette)"},
+                            {"vary", K::table, Q::dimensionless, "", false,
+                             "parameters that vary in space by a seeded noise field (see [materials.NAME.vary]), e.g. "
+                             "`vary = { density = 0.15, p0 = 0.3, scale = \"15 mm\", seed = 1 }`"},
                         }};
   for (const MaterialModelSpec& m : material_model_specs()) {
     materials.keys[1].choices.push_back(m.name);
@@ -94,6 +129,7 @@ std::vector<SectionSpec> build_schema() {
     }
   }
   s.push_back(materials);
+  s.push_back(vary_section());
 
   const std::vector<KeySpec> geometry = {
       {"shape", K::choice, Q::dimensionless, "", true,
@@ -308,8 +344,8 @@ std::vector<SectionSpec> build_schema() {
 }
 
 std::string unit_text(const KeySpec& k) {
-  if (k.kind == ValueKind::choice || k.kind == ValueKind::text || k.kind == ValueKind::tables ||
-      k.kind == ValueKind::boolean)
+  if (k.kind == ValueKind::choice || k.kind == ValueKind::text || k.kind == ValueKind::table ||
+      k.kind == ValueKind::tables || k.kind == ValueKind::boolean)
     return "";
   return si_unit(k.quantity);
 }
@@ -322,6 +358,7 @@ const char* kind_text(ValueKind k) {
     case ValueKind::choice: return "choice";
     case ValueKind::text: return "string";
     case ValueKind::boolean: return "boolean";
+    case ValueKind::table: return "table";
     case ValueKind::tables: return "array of tables";
   }
   return "";

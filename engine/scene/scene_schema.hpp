@@ -12,7 +12,7 @@
 
 namespace firn {
 
-enum class ValueKind { number, integer, vector3, choice, text, boolean, tables };
+enum class ValueKind { number, integer, vector3, choice, text, boolean, table, tables };
 
 struct KeySpec {
   std::string key;

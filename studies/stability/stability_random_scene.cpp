@@ -6,22 +6,19 @@
 #include <cstdio>
 #include <vector>
 
+#include "engine/splitmix64.hpp"
+
 namespace firn::study {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// SplitMix64 (Steele, Lea and Flood 2014): a fixed, portable stream of 64-bit values.
+// Draws from a SplitMix64 stream (engine/splitmix64.hpp): the same on every machine.
 class Random {
  public:
-  explicit Random(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * double(next() >> 11) * 0x1.0p-53; }
+  explicit Random(std::uint64_t seed) : rng_{seed} {}
+  std::uint64_t next() { return rng_.next(); }
+  double uniform(double lo, double hi) { return lo + (hi - lo) * rng_.uniform(); }
   double log_uniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
   int integer(int lo, int hi) { return lo + int(next() % std::uint64_t(hi - lo + 1)); }  // [lo, hi]
   bool chance(double p) { return uniform(0, 1) < p; }
@@ -31,7 +28,7 @@ class Random {
   }
 
  private:
-  std::uint64_t state_;
+  SplitMix64 rng_;
 };
 
 std::string num(double v) {
