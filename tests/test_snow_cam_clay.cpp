@@ -1,6 +1,7 @@
 // Cam-clay snow (kernels/constitutive/snow_cam_clay.hpp; Gaume et al. 2018, Wolper et al. 2019):
-// the hardening law's branches and slope, the elastic path, the three return cases (the material
-// driver's closed forms are in firn verify, material_driver_snow_cam_clay), float precision.
+// the hardening law's branches, the elastic path, the return on the wet and dry sides and past both
+// tips (the material driver's closed forms are in firn verify, material_driver_snow_cam_clay),
+// float precision.
 #include <gtest/gtest.h>
 
 #include <cmath>
