@@ -50,17 +50,22 @@ std::vector<std::size_t> add_table_particles(Simulation<T, Backend>& sim, const 
     sim.add_particles(materials.first(table), positions, velocities, volume);
     return order;
   }
+  // A stable counting sort of the particles by level: one pass, whatever the number of levels.
   const std::vector<int> material = materials.materials_at(table, rest);
-  order.clear();
-  for (int m = materials.first(table); m < materials.first(table) + materials.count(table); ++m) {
+  const int first = materials.first(table), count = materials.count(table);
+  std::vector<std::size_t> start(std::size_t(count) + 1, 0);
+  for (int m : material) ++start[std::size_t(m - first) + 1];
+  for (int l = 0; l < count; ++l) start[std::size_t(l) + 1] += start[std::size_t(l)];
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < positions.size(); ++i) order[next[std::size_t(material[i] - first)]++] = i;
+  for (int l = 0; l < count; ++l) {
+    if (start[std::size_t(l)] == start[std::size_t(l) + 1]) continue;
     std::vector<Point> x, v;
-    for (std::size_t i = 0; i < positions.size(); ++i)
-      if (material[i] == m) {
-        x.push_back(positions[i]);
-        v.push_back(velocities[i]);
-        order.push_back(i);
-      }
-    if (!x.empty()) sim.add_particles(m, x, v, volume);
+    for (std::size_t k = start[std::size_t(l)]; k < start[std::size_t(l) + 1]; ++k) {
+      x.push_back(positions[order[k]]);
+      v.push_back(velocities[order[k]]);
+    }
+    sim.add_particles(first + l, x, v, volume);
   }
   return order;
 }
