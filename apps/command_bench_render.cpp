@@ -17,7 +17,7 @@
 #include "viz/camera.hpp"
 #include "viz/frame_pipeline.hpp"
 #include "viz/frame_renderer.hpp"
-#include "viz/png_writer.hpp"
+#include "engine/output/png_file.hpp"
 #include "viz/synthetic_particles.hpp"
 
 namespace firn::app {
@@ -58,14 +58,14 @@ void bench_render(const BenchRenderOptions& o) {
   const std::clock_t cpu0 = std::clock();
   for (int f = 0; f < o.frames; ++f) {
     const auto t0 = Clock::now();
-    const viz::Image image = renderer.render(scene, camera);
+    const Image image = renderer.render(scene, camera);
     const auto t1 = Clock::now();
-    png_bytes = viz::encode_png(image).size();
+    png_bytes = encode_png(image).size();
     const auto t2 = Clock::now();
     draw.push_back(ms(t0, t1)), png.push_back(ms(t1, t2)), total.push_back(ms(t0, t2));
   }
   const double cpu_ms = 1e3 * double(std::clock() - cpu0) / CLOCKS_PER_SEC / o.frames;
-  if (!o.png.empty()) viz::write_png(o.png, renderer.render(scene, camera));
+  if (!o.png.empty()) write_png(o.png, renderer.render(scene, camera));
   const char* lp = std::getenv("LP_NUM_THREADS");
   std::printf("gl %s\nlp_num_threads %s\nparticles %zu\nwidth %d\nheight %d\nframes %d\n",
               context->description().c_str(), lp ? lp : "default", n, o.width, o.height, o.frames);

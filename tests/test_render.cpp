@@ -30,7 +30,7 @@
 #include "viz/frame_pipeline.hpp"
 #include "viz/frame_renderer.hpp"
 #include "viz/legend.hpp"
-#include "viz/png_writer.hpp"
+#include "engine/output/png_file.hpp"
 #include "viz/sdf_mesh.hpp"
 #include "viz/surface/reconstruct_surface.hpp"
 #include "viz/synthetic_particles.hpp"

@@ -1,12 +1,11 @@
 // Colour maps for scalar fields (sRGB components in [0, 1]) and the default material palette.
 #pragma once
 
-#include <array>
 #include <string>
 
-namespace firn::viz {
+#include "engine/output/image.hpp"
 
-using Rgb = std::array<float, 3>;
+namespace firn::viz {
 
 enum class ColorMap { viridis, diverging };
 

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "viz/image.hpp"
+#include "engine/output/image.hpp"
 
 namespace firn::viz {
 

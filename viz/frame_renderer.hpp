@@ -9,7 +9,7 @@
 
 #include "viz/camera.hpp"
 #include "viz/gl_context.hpp"
-#include "viz/image.hpp"
+#include "engine/output/image.hpp"
 #include "viz/render_settings.hpp"
 #include "viz/sdf_mesh.hpp"
 #include "viz/surface/surface_mesh.hpp"

@@ -6,7 +6,7 @@
 
 #include <cstdio>
 
-#include "viz/png_writer.hpp"
+#include "engine/output/png_file.hpp"
 
 namespace firn::viz {
 

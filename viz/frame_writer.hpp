@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "viz/ffmpeg_pipe.hpp"
-#include "viz/image.hpp"
+#include "engine/output/image.hpp"
 
 namespace firn::viz {
 

@@ -1,13 +1,12 @@
 // The legend drawn onto a finished frame (on the CPU, after read-back): a colour bar with the
-// field's name and range, or a swatch per material; and the simulated time. Text uses
-// stb_easy_font's built-in bitmap font.
+// field's name and range, or a swatch per material; and the simulated time.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "engine/output/image.hpp"
 #include "viz/color_map.hpp"
-#include "viz/image.hpp"
 
 namespace firn::viz {
 
@@ -22,8 +21,5 @@ struct Legend {
 };
 
 void draw_legend(Image& image, const Legend& legend);
-
-// Draws `text` with its top-left corner at (x, y) in pixels, each font pixel `scale` pixels wide.
-void draw_text(Image& image, int x, int y, const std::string& text, Rgb color, int scale);
 
 }  // namespace firn::viz

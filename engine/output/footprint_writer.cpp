@@ -3,65 +3,115 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <vector>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 
 #include "engine/output/atomic_file.hpp"
-#include "engine/output/colour_map.hpp"
 #include "engine/output/png_file.hpp"
 
 namespace firn {
 
-double write_footprint(const std::string& stem, const FootprintMap& map, const FootprintWindow& w) {
+FootprintField footprint_field(const FootprintMap& map, const FootprintWindow& w) {
   auto column = [&](double x, double origin, int count) {
     return std::clamp(int(std::lround((x - origin) / map.dx)), 0, count - 1);
   };
   const int i0 = column(w.center_x - w.half_x, map.origin_x, map.nx), i1 = column(w.center_x + w.half_x, map.origin_x, map.nx);
   const int k0 = column(w.center_z - w.half_z, map.origin_z, map.nz), k1 = column(w.center_z + w.half_z, map.origin_z, map.nz);
-  const int nx = i1 - i0 + 1, nz = k1 - k0 + 1;
+  FootprintField f;
+  f.nx = i1 - i0 + 1, f.nz = k1 - k0 + 1, f.dx = map.dx;
+  f.x0 = map.origin_x + i0 * map.dx, f.z0 = map.origin_z + k0 * map.dx;
   const double per_area = map.time > 0 ? 1 / (map.time * map.dx * map.dx) : 0;
-  std::vector<double> p(std::size_t(nx) * std::size_t(nz));
-  double peak = 0;
-  for (int k = 0; k < nz; ++k)
-    for (int i = 0; i < nx; ++i) {
-      const double v = map.impulse[std::size_t(i0 + i) * std::size_t(map.nz) + std::size_t(k0 + k)] * per_area;
-      p[std::size_t(k) * std::size_t(nx) + std::size_t(i)] = v;
-      peak = std::max(peak, v);
-    }
+  f.pressure.resize(std::size_t(f.nx) * std::size_t(f.nz));
+  for (int k = 0; k < f.nz; ++k)
+    for (int i = 0; i < f.nx; ++i)
+      f.pressure[std::size_t(k) * std::size_t(f.nx) + std::size_t(i)] =
+          map.impulse[std::size_t(i0 + i) * std::size_t(map.nz) + std::size_t(k0 + k)] * per_area;
+  return f;
+}
 
+TreadCoverAt tread_cover(const Collider<double>& tire) {
+  return [tire](double x, double z) {
+    const double r = tire.tire.radius, depth = tire.tire.tread_depth;
+    const double u = x - tire.center[0];
+    // The tire's axis is z (tire_shape.hpp); its lateral extent is about the centre.
+    if (std::fabs(u) >= r || std::fabs(z - tire.center[2]) > 0.5 * tire.tire.width) return TreadCover::none;
+    const double s = (r - 0.5 * depth) / r;
+    const double p[3] = {tire.center[0] + s * u, tire.center[1] - s * std::sqrt(r * r - u * u), z};
+    double n[3];
+    return tire.distance(p, n) < 0 ? TreadCover::block : TreadCover::groove;
+  };
+}
+
+double write_footprint(const std::string& stem, const FootprintMap& map, const FootprintWindow& w,
+                       const Collider<double>& tire, const std::string& title) {
+  const FootprintField f = footprint_field(map, w);
   std::string csv = "z\\x";
   char buf[32];
-  for (int i = 0; i < nx; ++i) {
-    std::snprintf(buf, sizeof buf, ",%.6g", map.origin_x + (i0 + i) * map.dx);
+  for (int i = 0; i < f.nx; ++i) {
+    std::snprintf(buf, sizeof buf, ",%.6g", f.x0 + i * f.dx);
     csv += buf;
   }
   csv += '\n';
-  for (int k = 0; k < nz; ++k) {
-    std::snprintf(buf, sizeof buf, "%.6g", map.origin_z + (k0 + k) * map.dx);
+  for (int k = 0; k < f.nz; ++k) {
+    std::snprintf(buf, sizeof buf, "%.6g", f.z0 + k * f.dx);
     csv += buf;
-    for (int i = 0; i < nx; ++i) {
-      std::snprintf(buf, sizeof buf, ",%.6g", p[std::size_t(k) * std::size_t(nx) + std::size_t(i)]);
+    for (int i = 0; i < f.nx; ++i) {
+      std::snprintf(buf, sizeof buf, ",%.6g", f.at(i, k));
       csv += buf;
     }
     csv += '\n';
   }
   write_file_atomically(stem + ".csv", csv);
 
-  constexpr int kScale = 6, kGap = 4, kBar = 10;
-  const int width = nx * kScale + kGap + kBar, height = nz * kScale;
-  std::vector<std::uint8_t> rgb(std::size_t(width) * std::size_t(height) * 3, 255);
-  auto put = [&](int x, int y, const std::array<float, 3>& c) {
-    for (int q = 0; q < 3; ++q)
-      rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(q)] = std::uint8_t(std::lround(255 * c[q]));
-  };
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < nx * kScale; ++x) {
-      const double v = p[std::size_t(y / kScale) * std::size_t(nx) + std::size_t(x / kScale)];
-      put(x, y, viridis(peak > 0 ? v / peak : 0));
+  FootprintFigureSpec spec;
+  spec.axle_x = w.center_x, spec.axle_z = w.center_z;
+  spec.title = title;
+  spec.tread = tread_cover(tire);
+  write_png(stem + ".png", draw_footprint_figure(f, spec));
+  return footprint_stats(f).peak;
+}
+
+std::optional<FootprintField> read_footprint_csv(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  // One row of numbers after its first cell (the header's "z\x", or a row's z); none if a cell is
+  // not a number.
+  auto numbers = [](const std::string& row, double* first) -> std::optional<std::vector<double>> {
+    std::vector<double> v;
+    std::stringstream cells(row);
+    std::string cell;
+    for (bool head = true; std::getline(cells, cell, ','); head = false) {
+      char* end = nullptr;
+      const double x = std::strtod(cell.c_str(), &end);
+      const bool number = !cell.empty() && end == cell.c_str() + cell.size();
+      if (head) {
+        if (first && !number) return std::nullopt;
+        if (first) *first = x;
+      } else {
+        if (!number) return std::nullopt;
+        v.push_back(x);
+      }
     }
-    for (int x = nx * kScale + kGap; x < width; ++x) put(x, y, viridis(1 - double(y) / std::max(1, height - 1)));
+    return v;
+  };
+  if (!std::getline(in, line) || line.rfind("z\\x,", 0) != 0) return std::nullopt;
+  const auto xs = numbers(line, nullptr);
+  if (!xs || xs->size() < 2) return std::nullopt;
+  FootprintField f;
+  f.nx = int(xs->size()), f.x0 = xs->front(), f.dx = ((*xs)[1] - (*xs)[0]);
+  std::vector<double> zs;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    double z = 0;
+    const auto row = numbers(line, &z);
+    if (!row || int(row->size()) != f.nx) return std::nullopt;
+    zs.push_back(z);
+    f.pressure.insert(f.pressure.end(), row->begin(), row->end());
   }
-  write_png_rgb(stem + ".png", width, height, rgb.data());
-  return peak;
+  if (zs.empty() || !(f.dx > 0)) return std::nullopt;
+  f.nz = int(zs.size()), f.z0 = zs.front();
+  return f;
 }
 
 }  // namespace firn

@@ -1,9 +1,12 @@
 // The tire's footprint: the contact pressure under it, per grid column, averaged over a frame
-// (issue 5, "Metrics"; the thesis' Figure 5.7). Written as a CSV grid and a PNG heat map.
+// (issue 5, "Metrics"; the thesis' Figure 5.7). Written as a CSV grid and a figure
+// (engine/output/footprint_figure.hpp).
 #pragma once
 
+#include <optional>
 #include <string>
 
+#include "engine/output/footprint_figure.hpp"
 #include "engine/simulation.hpp"
 
 namespace firn {
@@ -13,9 +16,20 @@ struct FootprintWindow {
   double center_x, center_z, half_x, half_z;
 };
 
+// The window's columns of `map` as pressures (Pa).
+FootprintField footprint_field(const FootprintMap& map, const FootprintWindow& window);
+
+// Which part of `tire` (a tire collider at its current pose) lies over a ground point: a point
+// half a tread depth inside its outer radius, straight above, decides block or groove.
+TreadCoverAt tread_cover(const Collider<double>& tire);
+
 // Writes STEM.csv (first row "z\x" and the column positions in m, then one row per z: its
-// position, then the pressures in Pa) and STEM.png (x to the right, z downward, viridis from 0 to
-// the window's peak, 6 pixels per column, a colour bar on the right). Returns the peak pressure.
-double write_footprint(const std::string& stem, const FootprintMap& map, const FootprintWindow& window);
+// position, then the pressures in Pa) and STEM.png (the figure, with the tire's tread outline and
+// `title`). Returns the peak pressure.
+double write_footprint(const std::string& stem, const FootprintMap& map, const FootprintWindow& window,
+                       const Collider<double>& tire, const std::string& title);
+
+// A STEM.csv written above, read back; none when it cannot be read or is not such a grid.
+std::optional<FootprintField> read_footprint_csv(const std::string& path);
 
 }  // namespace firn

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/output/image.hpp"
+
 namespace firn {
 
 // `height` rows of `width` RGB pixels (8 bits each, top row first), encoded.
@@ -14,5 +16,13 @@ std::vector<unsigned char> encode_png_rgb(int width, int height, const std::uint
 
 // The same, written atomically to `path`; throws std::runtime_error on failure.
 void write_png_rgb(const std::string& path, int width, int height, const std::uint8_t* rgb);
+
+inline std::vector<unsigned char> encode_png(const Image& image) {
+  return encode_png_rgb(image.width, image.height, image.rgb.data());
+}
+
+inline void write_png(const std::string& path, const Image& image) {
+  write_png_rgb(path, image.width, image.height, image.rgb.data());
+}
 
 }  // namespace firn

@@ -123,7 +123,10 @@ class SceneMetrics {
       if (writes_footprint()) {
         const FootprintWindow w{tire.collider.center[0], tire.collider.center[2], t.radius,
                                 0.5 * t.width + 2 * scene_.config.dx};
-        r += number(write_footprint(footprint_stem, sim.footprint(), w));
+        char title[128];
+        std::snprintf(title, sizeof title, "%s tread, t = %.1f ms, contact pressure averaged over the frame",
+                      t.tread.c_str(), 1e3 * sim.time());
+        r += number(write_footprint(footprint_stem, sim.footprint(), w, tire.collider, title));
         sim.footprint().reset();
       }
       const SnowCounts n = count_snow(sim, ground_speed);

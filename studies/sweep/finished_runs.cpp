@@ -1,8 +1,11 @@
 #include "studies/sweep/finished_runs.hpp"
 
+#include <filesystem>
 #include <string>
 
 #include "engine/output/atomic_file.hpp"
+#include "engine/output/png_file.hpp"
+#include "studies/sweep/footprint_comparison.hpp"
 #include "studies/sweep/gnuplot.hpp"
 #include "studies/sweep/metric_plot.hpp"
 #include "studies/sweep/sweep_table.hpp"
@@ -30,8 +33,19 @@ void FinishedRuns::plot() const {
       if (plan_.plots_named) report_("--plot " + metric + ": no finished run wrote it");
       continue;
     }
-    if (draw_plot_or_warn("firn sweep", dir, metric, *plot) == PlotStatus::no_gnuplot) return;
+    if (draw_plot_or_warn("firn sweep", dir, metric, *plot) == PlotStatus::no_gnuplot) break;
   }
+  std::vector<FootprintPanel> footprints;
+  for (const auto& [index, record] : finished_)
+    if (auto field = last_footprint(run_dir(plan_, index))) {
+      std::string label;
+      for (std::size_t k = 0; k < plan_.keys.size(); ++k)
+        label += (k ? ", " : "") + plan_.keys[k].key + "=" + record.values[k];
+      footprints.push_back({label, std::move(*field)});
+    }
+  if (footprints.empty()) return;
+  std::filesystem::create_directories(dir);
+  write_png(dir + "/footprints.png", footprint_comparison(footprints));
 }
 
 std::vector<RunRecord> FinishedRuns::in_run_order() const {

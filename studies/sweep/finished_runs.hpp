@@ -21,7 +21,9 @@ class FinishedRuns {
   bool all_ok() const;
 
   void write() const;  // OUT/sweep.csv
-  void plot() const;   // OUT/plots/METRIC.png for every plotted metric some run wrote
+  // OUT/plots/METRIC.png for every plotted metric some run wrote, and OUT/plots/footprints.png
+  // when the runs wrote footprints (footprint_comparison.hpp).
+  void plot() const;
 
  private:
   std::vector<RunRecord> in_run_order() const;
