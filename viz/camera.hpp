@@ -1,8 +1,10 @@
-// The view of a run: a perspective camera from the settings or framed automatically around a
-// bounding box, and the orthographic light camera of the shadow map.
+// The view of a run: a perspective camera from a preset ([render] camera) or from explicit
+// settings, framing the particles and the bounded colliders, and following them from frame to frame
+// without jumping; and the orthographic light camera of the shadow map.
 #pragma once
 
 #include <functional>
+#include <optional>
 
 #include "viz/mat4.hpp"
 #include "viz/render_settings.hpp"
@@ -15,6 +17,9 @@ struct Bounds {
   void add(const Vec3& p) {
     for (std::size_t d = 0; d < 3; ++d) lo[d] = std::min(lo[d], p[d]), hi[d] = std::max(hi[d], p[d]);
   }
+  void add_box(const Bounds& b) {
+    if (!b.empty()) add(b.lo), add(b.hi);
+  }
 };
 
 struct Camera {
@@ -26,13 +31,40 @@ struct Camera {
   Mat4 projection() const { return perspective(fov, aspect, near, far); }
 };
 
-// Looks at settings.camera_target (default: the centre of `bounds`) from settings.camera_position
-// (default: above and to one side, far enough that the bounds' sphere fits the narrower field of
-// view with a margin: in front and to the right, or the first of the mirrored directions whose
-// line of sight `solid` (a point inside a collider) does not block). `bounds` is the particles'
-// box when the run starts.
-Camera frame_camera(const RenderSettings& settings, const Bounds& bounds,
+// "auto", "side", "three_quarter", "contact" or "top"; throws std::invalid_argument otherwise.
+CameraPreset parse_camera_preset(const std::string& name);
+
+// What a frame shows: `subject`, the box of the particles and of the bounded colliders; `focus`,
+// the first bounded collider's box (the contact preset looks at its lowest point); `solid`, whether
+// a point lies inside a collider (the automatic preset turns so none blocks its line of sight).
+struct FrameSubject {
+  Bounds subject;
+  std::optional<Bounds> focus;
+  std::function<bool(const Vec3&)> solid;
+};
+
+// One camera for one frame: the preset's view of the subject (or settings.camera_position and
+// camera_target where given), far enough that the region's sphere fits the narrower field of view
+// with a margin.
+Camera frame_camera(const RenderSettings& settings, const Bounds& subject,
                     const std::function<bool(const Vec3&)>& solid = nullptr);
+
+// The cameras of a sequence of frames. Without camera_follow the first frame's camera stays. With
+// it, the region of interest moves a third of the way to each new frame's (so the view glides), but
+// never leaves any of the new region outside: it widens at once and narrows slowly. The preset's
+// direction is chosen on the first frame and kept.
+class CameraRig {
+ public:
+  explicit CameraRig(const RenderSettings& settings) : settings_(settings) {}
+  Camera next(const FrameSubject& frame);
+
+ private:
+  RenderSettings settings_;
+  std::optional<Vec3> direction_;    // from the target to the eye, unit
+  std::optional<Vec3> centre_;       // of the region of interest
+  double radius_ = 0;
+  std::optional<Camera> first_;
+};
 
 struct LightCamera {
   Mat4 view, projection;

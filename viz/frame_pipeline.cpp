@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "viz/color_field.hpp"
 #include "viz/legend.hpp"
@@ -17,6 +18,49 @@ template <class T>
 void add_positions(const PositionColumns& p, Bounds& b) {
   const T* x[3] = {static_cast<const T*>(p.x[0]), static_cast<const T*>(p.x[1]), static_cast<const T*>(p.x[2])};
   for (std::size_t i = 0; i < p.count; ++i) b.add({double(x[0][i]), double(x[1][i]), double(x[2][i])});
+}
+
+// The box of the positions without the `leave_out` lowest and highest along each axis.
+template <class T>
+Bounds trimmed_bounds(const PositionColumns& p, std::size_t leave_out) {
+  Bounds b;
+  std::vector<T> v;
+  for (std::size_t d = 0; d < 3; ++d) {
+    const T* x = static_cast<const T*>(p.x[d]);
+    v.assign(x, x + p.count);
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(leave_out), v.end());
+    b.lo[d] = double(v[leave_out]);
+    std::nth_element(v.begin(), v.end() - 1 - std::ptrdiff_t(leave_out), v.end());
+    b.hi[d] = double(v[p.count - 1 - leave_out]);
+  }
+  return b;
+}
+
+// What the camera frames (viz/camera.hpp): the particles, all but the few most extreme along each
+// axis (one stray particle does not widen the view; a thrown clump does), and the colliders that
+// are bounded, cut to the domain; the first of them is the focus.
+FrameSubject frame_subject(const RenderFrame& frame, const RenderSettings& s) {
+  FrameSubject f;
+  const PositionColumns& p = frame.positions;
+  constexpr std::size_t kStray = 8;
+  if (p.count > 100 * kStray) f.subject = p.doubles ? trimmed_bounds<double>(p, kStray) : trimmed_bounds<float>(p, kStray);
+  else f.subject = position_bounds(p);
+  for (const ColliderSolid& c : frame.colliders) {
+    Bounds b;
+    for (std::size_t d = 0; d < 3; ++d) b.lo[d] = std::max(c.lo[d], s.domain_min[d]), b.hi[d] = std::min(c.hi[d], s.domain_max[d]);
+    const bool bounded = std::isfinite(c.lo[0] + c.lo[1] + c.lo[2] + c.hi[0] + c.hi[1] + c.hi[2]);
+    if (!bounded || !(b.lo[0] < b.hi[0] && b.lo[1] < b.hi[1] && b.lo[2] < b.hi[2])) continue;
+    f.subject.add_box(b);
+    if (!f.focus) f.focus = b;
+  }
+  const std::vector<ColliderSolid>* colliders = &frame.colliders;
+  f.solid = [colliders](const Vec3& x) {
+    Vec3 n;
+    for (const ColliderSolid& c : *colliders)
+      if (c.distance(x, n) < 0) return true;
+    return false;
+  };
+  return f;
 }
 
 std::string time_caption(double t) {
@@ -36,7 +80,10 @@ Bounds position_bounds(const PositionColumns& p) {
 }
 
 FramePipeline::FramePipeline(const RenderSettings& settings, GlApi api, const FrameOutputs& outputs)
-    : settings_(settings), context_(make_gl_context(api)), renderer_(std::make_unique<FrameRenderer>(*context_, settings)) {
+    : settings_(settings),
+      context_(make_gl_context(api)),
+      renderer_(std::make_unique<FrameRenderer>(*context_, settings)),
+      camera_rig_(settings) {
   std::unique_ptr<FfmpegPipe> video;
   if (!outputs.video_path.empty())
     video = std::make_unique<FfmpegPipe>(outputs.video_path, settings.width, settings.height, outputs.fps);
@@ -47,15 +94,7 @@ FramePipeline::~FramePipeline() = default;
 
 void FramePipeline::add(const RenderFrame& frame) {
   const RenderSettings& s = settings_;
-  if (!camera_) {
-    auto solid = [&](const Vec3& x) {
-      Vec3 n;
-      for (const ColliderSolid& c : frame.colliders)
-        if (c.distance(x, n) < 0) return true;
-      return false;
-    };
-    camera_ = frame_camera(s, position_bounds(frame.positions), solid);
-  }
+  const Camera camera = camera_rig_.next(frame_subject(frame, s));
 
   FrameScene scene;
   scene.positions = frame.positions;
@@ -104,7 +143,7 @@ void FramePipeline::add(const RenderFrame& frame) {
                                                    hi + margin, kColliderMeshCells));
   }
 
-  Image image = renderer_->render(scene, *camera_);
+  Image image = renderer_->render(scene, camera);
   if (s.legend) {
     legend.caption = time_caption(frame.time);
     draw_legend(image, legend);

@@ -1,6 +1,7 @@
-// Renders a sequence of frames and hands them to the frame writer: a fixed camera framed on the
-// first frame (so the video does not jump), a colour range that only widens, collider meshes
-// from their signed distances, the snow surface where the frame has one, the legend, then PNG and video off this thread.
+// Renders a sequence of frames and hands them to the frame writer: the camera rig's view of each
+// frame (viz/camera.hpp: following the particles and bounded colliders smoothly, or fixed), a colour
+// range that only widens, collider meshes from their signed distances, the snow surface where the
+// frame has one, the legend, then PNG and video off this thread.
 #pragma once
 
 #include <memory>
@@ -38,7 +39,7 @@ class FramePipeline {
   std::unique_ptr<GlContext> context_;
   std::unique_ptr<FrameRenderer> renderer_;
   std::unique_ptr<FrameWriter> writer_;
-  std::optional<Camera> camera_;
+  CameraRig camera_rig_;
   double field_min_ = 0, field_max_ = 0;
   bool field_seen_ = false;
 };

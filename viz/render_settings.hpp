@@ -11,9 +11,14 @@
 
 namespace firn::viz {
 
+// Where the camera looks from (viz/camera.hpp); [render] camera in the scene.
+enum class CameraPreset { automatic, side, three_quarter, contact, top };
+
 struct RenderSettings {
   int width = 1280, height = 720;
-  std::optional<Vec3> camera_position, camera_target;  // automatic framing where absent
+  CameraPreset camera = CameraPreset::automatic;
+  bool camera_follow = true;                            // reframe every frame (viz/camera.hpp)
+  std::optional<Vec3> camera_position, camera_target;  // override the preset where given
   double fov = 0.61;                                    // vertical field of view (rad)
   std::optional<Vec3> light_direction;                  // the direction the light travels
   bool shadows = true, ambient_occlusion = true, ground = true, legend = true, cutaway = false;

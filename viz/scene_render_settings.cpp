@@ -1,5 +1,7 @@
 #include "viz/scene_render_settings.hpp"
 
+#include "viz/camera.hpp"
+
 namespace firn::viz {
 
 RenderSettings scene_render_settings(const SceneSpec& scene) {
@@ -7,6 +9,8 @@ RenderSettings scene_render_settings(const SceneSpec& scene) {
   RenderSettings s;
   s.width = r.width;
   s.height = r.height;
+  s.camera = parse_camera_preset(r.camera);
+  s.camera_follow = r.camera_follow;
   s.camera_position = r.camera_position;
   s.camera_target = r.camera_target;
   s.fov = r.fov;

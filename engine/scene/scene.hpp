@@ -90,7 +90,9 @@ struct RenderSpec {
   int fps = 30;
   std::string color_map = "auto";  // auto: diverging for J, viridis otherwise
   std::optional<double> color_min, color_max;
-  std::optional<Point> camera_position, camera_target;  // automatic framing where absent
+  std::string camera = "auto";  // auto, side, three_quarter, contact or top (viz/camera.hpp)
+  bool camera_follow = true;    // presets reframe every frame, smoothly
+  std::optional<Point> camera_position, camera_target;  // override the preset where given
   double fov = 0.6108652381980153;                      // vertical, rad (35 degrees)
   std::optional<Point> light_direction;  // default: from above, over the camera's shoulder
   bool shadows = true, ambient_occlusion = true, ground = true, legend = true, cutaway = false;

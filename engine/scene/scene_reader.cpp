@@ -795,6 +795,8 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     s.render.color_max = r.optional_number("color_max");
     if (s.render.color_min && s.render.color_max && !(*s.render.color_max > *s.render.color_min))
       r.fail("color_max", "must exceed color_min");
+    s.render.camera = r.choice("camera");
+    s.render.camera_follow = r.boolean("camera_follow");
     s.render.camera_position = r.optional_vec3("camera_position");
     s.render.camera_target = r.optional_vec3("camera_target");
     s.render.fov = r.number("fov");

@@ -312,10 +312,19 @@ std::vector<SectionSpec> build_schema() {
                     "value so far in the run)"},
                    {"color_max", K::number, Q::dimensionless, "", false,
                     "field value at the high end of the colour map (default: the highest value so far)"},
+                   {"camera", K::choice, Q::dimensionless, "\"auto\"", false,
+                    "camera preset, framing the particles and the bounded colliders: auto (in front, right and "
+                    "above, turned so no collider blocks the view), side (level, looking along -z), three_quarter "
+                    "(front right, above), contact (close and low on the first bounded collider's lowest point, "
+                    "e.g. the tire's contact patch, from its front quarter) or top (looking down)",
+                    -kInf, kInf, false, {"auto", "side", "three_quarter", "contact", "top"}},
+                   {"camera_follow", K::boolean, Q::dimensionless, "true", false,
+                    "reframe every frame so every body and the thrown snow stay in view, smoothly (the view widens "
+                    "at once when something would leave it and narrows slowly); false: framed on the first frame"},
                    {"camera_position", K::vector3, Q::length, "", false,
-                    "camera position (default: in front, right and above, framing the particles at the start)"},
+                    "camera position (default: from the preset); with camera_target, a fixed camera"},
                    {"camera_target", K::vector3, Q::length, "", false,
-                    "point the camera looks at (default: the centre of the particles at the start)"},
+                    "point the camera looks at (default: from the preset)"},
                    {"fov", K::number, Q::angle, "\"35 deg\"", false, "vertical field of view", 0, 3, true},
                    {"light_direction", K::vector3, Q::dimensionless, "", false,
                     "direction the key light travels, need not be unit length (default: down and away from the "
