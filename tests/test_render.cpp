@@ -120,8 +120,8 @@ struct GoldenScene {
       ColliderSpec box;
       box.kind = ColliderSpec::Kind::box;
       box.min = {0.24, 0, 0.0}, box.max = {0.3, 0.12, 0.2};
-      scene.colliders.push_back(mesh_signed_distance(collider_solid(collider_body(box).collider).distance, settings.domain_min,
-                                                     settings.domain_max, 48));
+      scene.colliders.push_back({mesh_signed_distance(collider_solid(collider_body(box).collider).distance,
+                                                      settings.domain_min, settings.domain_max, 48)});
     }
   }
   Camera camera() const { return frame_camera(settings, position_bounds(scene.positions)); }

@@ -6,12 +6,16 @@
 #include <vector>
 
 #include "viz/color_field.hpp"
+#include "viz/dual_contour.hpp"
 #include "viz/legend.hpp"
 
 namespace firn::viz {
 namespace {
 
 constexpr int kColliderMeshCells = 64;  // along the longest side of a collider's box
+// Along the longest side of a body meshed in its own frame: 2 mm on the thesis' 40 cm tire, where
+// the mesh takes about 2 s once (viz/dual_contour.hpp).
+constexpr int kBodyMeshCells = 200;
 const Rgb kSnowAlbedo = {0.9f, 0.95f, 1.0f};  // the thesis' snow albedo, as the snow shader uses it
 
 template <class T>
@@ -61,6 +65,27 @@ FrameSubject frame_subject(const RenderFrame& frame, const RenderSettings& s) {
     return false;
   };
   return f;
+}
+
+// A mesh made in a body's frame, at the body's pose.
+TriangleMesh posed(const TriangleMesh& m, const ColliderSolid::Body& b) {
+  TriangleMesh out;
+  out.vertices.resize(m.vertices.size());
+  for (std::size_t v = 0; v < m.vertices.size(); v += 6) {
+    const Vec3 x = b.to_world({m.vertices[v], m.vertices[v + 1], m.vertices[v + 2]});
+    const Vec3 n = b.rotate({m.vertices[v + 3], m.vertices[v + 4], m.vertices[v + 5]});
+    for (std::size_t k = 0; k < 3; ++k) out.vertices[v + k] = float(x[k]), out.vertices[v + 3 + k] = float(n[k]);
+  }
+  return out;
+}
+
+// The mesh in its collider's material (viz/frame_renderer.hpp).
+ColliderMesh collider_mesh(const ColliderSolid& c, TriangleMesh mesh) {
+  ColliderMesh m;
+  m.mesh = std::move(mesh);
+  if (c.shape == ColliderShape::tire) m.color = {0.25f, 0.25f, 0.26f}, m.gloss = 0.3f;  // albedo 0.06 (stored as its root)
+  if (c.shape == ColliderShape::plane) m.color = {0.30f, 0.30f, 0.31f};
+  return m;
 }
 
 std::string time_caption(double t) {
@@ -132,15 +157,31 @@ void FramePipeline::add(const RenderFrame& frame) {
     legend.names = s.material_names;
     legend.colors = s.material_colors;
   }
-  // Colliders as solids cut to the domain, each meshed over its own box within the domain (so a
-  // small collider gets fine cells), enlarged by two cells so the cut faces close.
-  for (const ColliderSolid& c : frame.colliders) {
+  // Colliders as solids. One inside the domain is meshed once in its own frame with sharp edges
+  // and moved to its pose every frame; any other is cut to the domain and meshed over its own box
+  // within the domain (so a small collider gets fine cells), enlarged by two cells so the cut faces
+  // close.
+  body_meshes_.resize(frame.colliders.size());
+  for (std::size_t i = 0; i < frame.colliders.size(); ++i) {
+    const ColliderSolid& c = frame.colliders[i];
+    bool inside = c.body.has_value();
+    for (std::size_t d = 0; d < 3; ++d) inside = inside && c.lo[d] >= s.domain_min[d] && c.hi[d] <= s.domain_max[d];
+    if (inside) {
+      if (!body_meshes_[i]) {
+        const ColliderSolid::Body& b = *c.body;
+        const double h = std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]}) / kBodyMeshCells;
+        const Vec3 margin = {2 * h, 2 * h, 2 * h};
+        body_meshes_[i] = dual_contour(b.distance, b.lo - margin, b.hi + margin, h);
+      }
+      scene.colliders.push_back(collider_mesh(c, posed(*body_meshes_[i], *c.body)));
+      continue;
+    }
     Vec3 lo, hi;
     for (std::size_t d = 0; d < 3; ++d) lo[d] = std::max(c.lo[d], s.domain_min[d]), hi[d] = std::min(c.hi[d], s.domain_max[d]);
     if (!(lo[0] < hi[0] && lo[1] < hi[1] && lo[2] < hi[2])) continue;  // outside the domain
     const Vec3 margin = (2.0 / kColliderMeshCells) * (hi - lo);
-    scene.colliders.push_back(mesh_signed_distance(clip_to_box(c.distance, s.domain_min, s.domain_max), lo - margin,
-                                                   hi + margin, kColliderMeshCells));
+    scene.colliders.push_back(collider_mesh(c, mesh_signed_distance(clip_to_box(c.distance, s.domain_min, s.domain_max), lo - margin,
+                                                   hi + margin, kColliderMeshCells)));
   }
 
   Image image = renderer_->render(scene, camera);

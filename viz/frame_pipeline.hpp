@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "viz/camera.hpp"
 #include "viz/frame_renderer.hpp"
@@ -40,6 +41,7 @@ class FramePipeline {
   std::unique_ptr<FrameRenderer> renderer_;
   std::unique_ptr<FrameWriter> writer_;
   CameraRig camera_rig_;
+  std::vector<std::optional<TriangleMesh>> body_meshes_;  // per collider, in its own frame (made once)
   double field_min_ = 0, field_max_ = 0;
   bool field_seen_ = false;
 };

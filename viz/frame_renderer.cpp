@@ -187,7 +187,7 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
     }
   }
   const GLsizei ground_vertices = GLsizei(meshes.size() / 6);
-  for (const TriangleMesh& m : scene.colliders) meshes.insert(meshes.end(), m.vertices.begin(), m.vertices.end());
+  for (const ColliderMesh& m : scene.colliders) meshes.insert(meshes.end(), m.mesh.vertices.begin(), m.mesh.vertices.end());
   const GLsizei mesh_vertices = GLsizei(meshes.size() / 6);
   gl.glBindVertexArray(r_->vao[1]);
   gl.glBindBuffer(GL_ARRAY_BUFFER, r_->buffers[4]);
@@ -315,16 +315,21 @@ Image FrameRenderer::render(const FrameScene& scene, const Camera& camera) {
       const Rgb ground_color = {0.80f, 0.79f, 0.77f};
       const auto centre = to_float({camera.target[0], ground_y, camera.target[2]});
       p.set("base_color", ground_color.data());
+      p.set("gloss", 0.04f);
       p.set("checker", float(camera.radius / 2));
       p.set("fade_center", centre.data());
       p.set("fade_radius", float(ground_half));
       gl.glDrawArrays(GL_TRIANGLES, 0, ground_vertices);
     }
-    const Rgb collider_color = {0.55f, 0.57f, 0.62f};
-    p.set("base_color", collider_color.data());
     p.set("checker", 0.0f);
     p.set("fade_radius", 0.0f);
-    gl.glDrawArrays(GL_TRIANGLES, ground_vertices, mesh_vertices - ground_vertices);
+    GLint first = ground_vertices;
+    for (const ColliderMesh& m : scene.colliders) {
+      p.set("base_color", m.color.data());
+      p.set("gloss", m.gloss);
+      gl.glDrawArrays(GL_TRIANGLES, first, GLsizei(m.mesh.vertex_count()));
+      first += GLint(m.mesh.vertex_count());
+    }
   }
 
   // 3. Ambient occlusion at half resolution, then lighting, shadows, background, tone and gamma

@@ -29,12 +29,20 @@ struct ColorRange {
   Rgb color;
 };
 
+// A collider's triangles and its material: the default matte grey-blue, dark rubber for a tire,
+// asphalt for a ground plane (the road under the snow).
+struct ColliderMesh {
+  TriangleMesh mesh;
+  Rgb color = {0.55f, 0.57f, 0.62f};
+  float gloss = 0.04f;  // weight of the specular highlight
+};
+
 struct FrameScene {
   PositionColumns positions;
   std::vector<ColorRange> ranges;  // colour by material: used when `scalar` is null
   const float* scalar = nullptr;   // colour field, one value per particle
   double scalar_min = 0, scalar_max = 1;
-  std::vector<TriangleMesh> colliders;
+  std::vector<ColliderMesh> colliders;
   // The snow surface with its hoar crystals, drawn in the snow material; null: none.
   const surface::SurfaceMesh* snow = nullptr;
 };

@@ -15,12 +15,25 @@ std::string number_text(double v) {
 
 const Rgb kInk = {0.12f, 0.12f, 0.14f};
 
+// Lightens the pixels x0 <= x < x1, y0 <= y < y1 three quarters of the way to white, so dark text
+// stays readable over a dark body (a tire) behind it.
+void lighten(Image& image, int x0, int y0, int x1, int y1) {
+  for (int y = std::max(y0, 0); y < std::min(y1, image.height); ++y)
+    for (int x = std::max(x0, 0); x < std::min(x1, image.width); ++x)
+      for (int k = 0; k < 3; ++k) image.pixel(x, y)[k] = std::uint8_t(255 - (255 - image.pixel(x, y)[k]) / 4);
+}
+
 }  // namespace
 
 void draw_legend(Image& image, const Legend& legend) {
   const int scale = std::max(1, image.height / 360);
   const int margin = 8 * scale, line = 12 * scale;
   int x = image.width - margin - 150 * scale, y = margin;
+  const int rows = legend.names.empty() ? 3 : 1 + int(legend.names.size());
+  lighten(image, x - 4 * scale, y - 4 * scale, x + 150 * scale, y + rows * line + 2 * scale);
+  if (!legend.caption.empty())
+    lighten(image, margin - 4 * scale, image.height - margin - 12 * scale,
+            margin + text_width(legend.caption, scale) + 4 * scale, image.height - margin + 2 * scale);
   draw_text(image, x, y, legend.title, kInk, scale);
   y += line;
   if (!legend.names.empty()) {

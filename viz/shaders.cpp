@@ -100,6 +100,7 @@ uniform vec3 base_color;
 uniform float checker;       // ground tile size (m); 0: plain
 uniform vec3 fade_center;    // the ground fades into the background away from here
 uniform float fade_radius;   // 0: no fade
+uniform float gloss;         // weight of the specular highlight (below 0.5: not snow)
 layout(location = 0) out vec4 albedo_gloss;
 layout(location = 1) out vec4 normal_fade;
 void main() {
@@ -111,7 +112,7 @@ void main() {
     albedo *= mod(cell.x + cell.y, 2.0) < 0.5 ? 1.0 : 0.92;
   }
   float fade = fade_radius > 0.0 ? smoothstep(0.4 * fade_radius, fade_radius, length(p_world - fade_center)) : 0.0;
-  albedo_gloss = vec4(albedo, 0.04);
+  albedo_gloss = vec4(albedo, gloss);
   normal_fade = vec4(0.5 * n + 0.5, fade);
 }
 )";
