@@ -39,6 +39,11 @@ void draw_text(Image& image, int x, int y, const std::string& text, Rgb color, i
   }
 }
 
+int text_width(const std::string& text, int scale) {
+  std::string copy = text;
+  return stb_easy_font_width(copy.data()) * scale;
+}
+
 void draw_legend(Image& image, const Legend& legend) {
   const int scale = std::max(1, image.height / 360);
   const int margin = 8 * scale, line = 12 * scale;
@@ -60,7 +65,7 @@ void draw_legend(Image& image, const Legend& legend) {
     y += h + 3 * scale;
     draw_text(image, x, y, number_text(legend.min), kInk, scale);
     const std::string hi = number_text(legend.max);
-    draw_text(image, x + w - stb_easy_font_width(const_cast<char*>(hi.c_str())) * scale, y, hi, kInk, scale);
+    draw_text(image, x + w - text_width(hi, scale), y, hi, kInk, scale);
   }
   if (!legend.caption.empty()) draw_text(image, margin, image.height - margin - 8 * scale, legend.caption, kInk, scale);
 }

@@ -26,4 +26,7 @@ void draw_legend(Image& image, const Legend& legend);
 // Draws `text` with its top-left corner at (x, y) in pixels, each font pixel `scale` pixels wide.
 void draw_text(Image& image, int x, int y, const std::string& text, Rgb color, int scale);
 
+// The width in pixels that draw_text gives `text` at `scale`.
+int text_width(const std::string& text, int scale);
+
 }  // namespace firn::viz

@@ -1,6 +1,7 @@
 // PNG files through stb_image_write (Debian's libstb-dev), deflated by zlib at level 1 in place of
 // stb's own compressor (STBIW_ZLIB_COMPRESS; DESIGN.md section 7: several times faster, files a
-// little larger). The one PNG encoder of firn: footprint maps and rendered frames.
+// little larger). The one PNG encoder of firn: footprint maps and rendered frames; and the decoder
+// (stb_image) that reads frames back for a sweep's contact sheets.
 #pragma once
 
 #include <cstdint>
@@ -14,5 +15,14 @@ std::vector<unsigned char> encode_png_rgb(int width, int height, const std::uint
 
 // The same, written atomically to `path`; throws std::runtime_error on failure.
 void write_png_rgb(const std::string& path, int width, int height, const std::uint8_t* rgb);
+
+struct RgbPixels {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;  // width * height * 3, top row first
+};
+
+// A PNG file's pixels as 8-bit RGB (grey and alpha converted); throws std::runtime_error when the
+// file cannot be read or decoded.
+RgbPixels read_png_rgb(const std::string& path);
 
 }  // namespace firn
