@@ -1,9 +1,10 @@
 // The renderer's entry points in a build without viz/ (its headers were missing at configure
-// time): each says so.
+// time), a sweep's contact sheets among them: each says so.
 #include <cstdio>
 #include <stdexcept>
 
 #include "apps/commands.hpp"
+#include "studies/report/contact_sheet.hpp"
 #include "viz/run_rendering.hpp"
 
 namespace firn {
@@ -26,6 +27,8 @@ void add_unavailable(CLI::App& parent, const char* name, const char* what) {
 viz::RunRendering viz::start_run_rendering(const SceneSpec&, const std::string&, bool, const std::string&, bool, int) {
   throw std::runtime_error(kMissing);
 }
+
+std::vector<std::string> report::write_contact_sheets(const sweep::SweepPlan&) { throw std::runtime_error(kMissing); }
 
 void app::add_render_command(CLI::App& app) { add_unavailable(app, "render", "re-render a finished run (not built)"); }
 void app::add_bench_render_command(CLI::App& bench) {
