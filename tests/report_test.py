@@ -7,7 +7,8 @@ run:     `firn run --render spheres --video --report` on a short two_spheres run
          no run's or sweep's.
 sweep:   a two-run sweep with --render spheres --report writes contact sheets (every run's middle
          and last frame in a grid), each run's own report and the sweep's page, whose links and
-         images all resolve, with the pivot table of the plotted metric.
+         images all resolve, with the pivot table of the plotted metric; `firn sweep --collect
+         --report` writes the same sheets and page again.
 browser: both pages opened in Debian's headless chromium load with no console error and every
          image shown (the page's own check, read from the DOM), and their screenshots are not
          blank. Exit status 77 (skipped) where chromium is not installed.
@@ -134,7 +135,14 @@ def test_sweep():
     for run in ["001_pic", "002_apic"]:
         check(f'href="runs/{run}/report.html"' in html, f"report.html does not link runs/{run}/report.html")
         check_self_contained(os.path.join(out, "runs", run, "report.html"))
-    for part in ["plots/energy_residual.png", "<caption>energy_residual by simulation.transfer (columns)</caption>",
+    # --render is kept in sweep.args: --collect writes the sheets again, and --report the page.
+    shutil.rmtree(os.path.join(out, "contact_sheets"))
+    os.remove(os.path.join(out, "report.html"))
+    r = firn("sweep", "--collect", out, "--report")
+    check(r.returncode == 0, f"firn sweep --collect --report exited {r.returncode}: {r.stderr}")
+    check(sorted(os.listdir(os.path.join(out, "contact_sheets"))) == sheets, "--collect did not write the contact sheets")
+    check(page(os.path.join(out, "report.html")) == html, "--collect --report wrote another page")
+    for part in ["plots/energy_residual.png", "<caption>energy_residual by simulation.transfer (columns); ratio: apic / pic</caption>",
                  "<th colspan=\"3\">mean_energy_residual</th>", "<caption>sweep.csv: one row per finished run</caption>"]:
         check(part in html, f"report.html lacks {part}")
 

@@ -84,9 +84,9 @@ TEST(PivotTable, TheThesisTable51BySnowAndTread) {
   ASSERT_EQ(csv.rows.size(), 4u);
   EXPECT_EQ(varied_key_columns(csv), 2u);
   const HtmlTable t = pivot_table(csv, "displaced");
-  EXPECT_EQ(t.caption, "displaced by tire.tread (rows) and materials.snow.preset (columns)");
+  EXPECT_EQ(t.caption, "displaced by tire.tread (rows) and materials.snow.preset (columns); ratio: soft / hard");
   EXPECT_EQ(t.groups, (std::vector<std::pair<std::string, int>>{{"", 1}, {"mean_displaced", 3}, {"displaced@0.01", 3}}));
-  EXPECT_EQ(t.header, (Strings{"tire.tread", "hard", "soft", "soft / hard", "hard", "soft", "soft / hard"}));
+  EXPECT_EQ(t.header, (Strings{"tire.tread", "hard", "soft", "ratio", "hard", "soft", "ratio"}));
   ASSERT_EQ(t.rows.size(), 2u);
   EXPECT_EQ(t.rows[0], (Strings{"bowtie", "5", "10", "2", "4", "6", "1.5"}));
   EXPECT_EQ(t.rows[1], (Strings{"six_rib", "6", "", "", "8", "", ""}));  // no value, no ratio

@@ -66,13 +66,14 @@ HtmlTable pivot_table(const CsvTable& sweep, const std::string& metric) {
   const std::size_t width = firsts.size() + (ratio ? 1 : 0);
   std::string row_keys;
   for (std::size_t k = 1; k < keys; ++k) row_keys += (k > 1 ? ", " : "") + sweep.header[k];
-  table.caption = metric + " by " + (keys > 1 ? row_keys + " (rows) and " : "") + sweep.header[0] + " (columns)";
+  table.caption = metric + " by " + (keys > 1 ? row_keys + " (rows) and " : "") + sweep.header[0] + " (columns)" +
+                  (ratio ? "; ratio: " + firsts[1] + " / " + firsts[0] : "");
   table.header.push_back(row_keys);
   table.groups.emplace_back("", 1);
   for (const std::size_t c : columns) {
     table.groups.emplace_back(sweep.header[c], int(width));
     for (const std::string& f : firsts) table.header.push_back(f);
-    if (ratio) table.header.push_back(firsts[1] + " / " + firsts[0]);
+    if (ratio) table.header.push_back("ratio");
   }
   table.rows.assign(others.size(), std::vector<std::string>(1 + columns.size() * width));
   for (std::size_t r = 0; r < others.size(); ++r) table.rows[r][0] = others[r].empty() ? "all runs" : others[r];

@@ -25,7 +25,7 @@ std::size_t varied_key_columns(const CsvTable& sweep);
 // The pivot of sweep.csv's columns of scene metric `metric` (C@T for each --at time T, mean_C) by
 // the varied keys: one row per combination of the keys after the first, and under each of those
 // columns one column per value of the first key (the snow, in the thesis' 18-run matrix), followed
-// by their ratio (second / first) when the first key has two values. Empty (no rows) when
+// by their ratio (second / first, the caption says which) when the first key has two values. Empty (no rows) when
 // sweep.csv has no column of the metric.
 HtmlTable pivot_table(const CsvTable& sweep, const std::string& metric);
 
