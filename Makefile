@@ -2,20 +2,23 @@
 #   make deps   install the Debian packages the build needs (idempotent, skips what is present)
 #   make demo   deps + Release build + the known-answer problems, the snowball_pair scene (preview,
 #               rendered to frames/*.png and video.mp4) and the reference benchmark
-#   make test   deps + Release build + the whole test suite, then a 30 s fuzz run where clang is present
+#   make test   deps + test-deps + Release build + the whole test suite, then a 30 s fuzz run where
+#               clang is present
+#   make test-deps  install what only the tests use: chromium, which opens firn report's pages headless
 #   make fuzz   the fuzz preset's build and FUZZ_SECONDS (default 30) of the scene fuzzer (skipped
 #               without clang and libFuzzer; make fuzz-deps installs them)
 #   make slurm-deps  install Slurm and munge, for the one-node Slurm test of firn sweep --scheduler slurm
 DEB_PACKAGES := build-essential cmake libeigen3-dev libcli11-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev \
                 python3 python3-vtk9 gnuplot-nox \
                 libegl-dev libgl-dev libosmesa6-dev libegl-mesa0 libgl1-mesa-dri libstb-dev zlib1g-dev ffmpeg
+TEST_PACKAGES := chromium
 FUZZ_PACKAGES := clang libclang-rt-14-dev libomp-14-dev
 SLURM_PACKAGES := slurmctld slurmd slurm-client munge
 JOBS ?= $(shell nproc)
 FUZZ_SECONDS ?= 30
 FIRN := build/release/firn
 
-.PHONY: deps fuzz-deps slurm-deps build demo test fuzz bench clean
+.PHONY: deps test-deps fuzz-deps slurm-deps build demo test fuzz bench clean
 
 # $(call install_missing,TARGET,PACKAGES): apt-get install those of PACKAGES not installed yet.
 define install_missing
@@ -29,6 +32,9 @@ endef
 
 deps:
 	$(call install_missing,deps,$(DEB_PACKAGES))
+
+test-deps:
+	$(call install_missing,test-deps,$(TEST_PACKAGES))
 
 fuzz-deps:
 	$(call install_missing,fuzz-deps,$(FUZZ_PACKAGES))
@@ -45,7 +51,7 @@ demo: build
 	$(FIRN) run scenes/snowball_pair.toml --preview --render spheres --video --out out/snowball_pair
 	$(FIRN) bench step --problem cube_drop --steps 50
 
-test: build
+test: build test-deps
 	ctest --preset release
 	$(MAKE) fuzz
 

@@ -1,13 +1,15 @@
 // firn run SCENE [--out DIR] [--set KEY=VALUE]... [--threads N] [--backend serial|openmp|cuda] [--preview]
 //                [--render none|spheres|surface] [--video] [--mesh] [--gl egl|osmesa] [--checkpoint-every TIME]
+//                [--report]
 // firn run --resume DIR [--threads N] [--backend ...] [--render ...] [--video] [--mesh] [--gl ...]
-//                [--checkpoint-every TIME]
+//                [--checkpoint-every TIME] [--report]
 // With --render spheres or surface, every output frame is also drawn to frames/NNNNN.png (and
 // video.mp4); surface draws the reconstructed snow surface (viz/surface/frame_surface.hpp).
 // Validates the scene (any fault: one line on standard error, exit status 2, nothing written),
 // runs it with progress on a terminal, and writes the outputs of DESIGN.md section 5.
 // An interrupt writes DIR/checkpoint.firn, and so does --checkpoint-every at the frames it names;
 // --resume continues such a run (engine/scene/checkpoint.hpp) to the end it would have reached.
+// --report writes DIR/report.html (firn report DIR) when the run ends, unless it was interrupted.
 // Exit status: 0 completed, 1 unstable or failed, 2 bad scene, options or checkpoint, 130 interrupted.
 #include <unistd.h>
 
@@ -79,7 +81,7 @@ void add_run_command(CLI::App& app) {
     std::string scene, out, render = "none", gl, backend = "openmp", resume, checkpoint_every;
     std::vector<std::string> sets;
     int threads = 0;
-    bool preview = false, video = false, mesh = false;
+    bool preview = false, video = false, mesh = false, report = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App* run = app.add_subcommand("run", "run a scene and write its outputs");
@@ -98,6 +100,7 @@ void add_run_command(CLI::App& app) {
   run->add_flag("--video", o->video, "encode the frames to video.mp4");
   run->add_flag("--mesh", o->mesh, "write reconstructed surfaces to meshes/NNNNN.ply");
   run->add_option("--gl", o->gl, "OpenGL context: egl or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
+  run->add_flag("--report", o->report, "write DIR/report.html (firn report DIR) when the run ends");
   run->callback([o]() {
     auto refuse = [](const std::string& why) {
       std::fprintf(stderr, "firn run: %s\n", why.c_str());
@@ -199,6 +202,7 @@ void add_run_command(CLI::App& app) {
           std::fprintf(stderr, "firn run: the last output frame's state is in %s (firn run --resume repeats the run from it)\n",
                        checkpoint_path(options.out_dir).c_str());
       }
+      if (o->report && s.status != "interrupted") write_report_page(options.out_dir, "firn run");
       set_exit_status(s.status == "interrupted" ? 130 : 1);
       return;
     }
@@ -209,6 +213,7 @@ void add_run_command(CLI::App& app) {
       std::printf("frames in %s/frames%s (%s)\n", options.out_dir.c_str(), o->video ? ", video.mp4" : "",
                   rendering.description.c_str());
     if (o->mesh) std::printf("surfaces in %s/meshes\n", options.out_dir.c_str());
+    if (o->report) set_exit_status(write_report_page(options.out_dir, "firn run"));
   });
 }
 

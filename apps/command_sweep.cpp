@@ -1,8 +1,9 @@
 // firn sweep SCENE --vary KEY=V1,V2[,...]... [--set KEY=VALUE]... [--out DIR] [--preview] [--jobs N]
 //                  [--at T1,T2,...] [--backend serial|openmp|cuda] [--plot C1,C2,...]
 //                  [--scheduler local|slurm] [--sbatch OPTION]... [--checkpoint-every TIME]
-// firn sweep --collect DIR [--plot C1,C2,...]
-// firn sweep --resume DIR [--jobs N] [--backend B]
+//                  [--render none|spheres|surface] [--report]
+// firn sweep --collect DIR [--plot C1,C2,...] [--report]
+// firn sweep --resume DIR [--jobs N] [--backend B] [--report]
 // Runs every combination of the --vary values (their Cartesian product) as a child `firn run`, N at
 // a time, and writes DIR/sweep.csv (one row per finished run, rewritten after each) and gnuplot
 // PNG plots of scene metrics against time under DIR/plots/ (--plot, or displaced, accumulated and
@@ -13,16 +14,21 @@
 // the finished runs (the sweep's options are kept in DIR/sweep.args) into sweep.csv and the plots.
 // --resume DIR continues an interrupted local sweep from DIR/sweep.args: finished runs are kept,
 // interrupted ones resume from their checkpoints (firn run --resume), the rest run.
+// With --render every run draws its frames, and the sweep writes contact sheets: the middle and the
+// last frame of every run side by side, DIR/contact_sheets/NNNNN.png. --report writes
+// DIR/report.html (firn report DIR) once the runs have ended.
 // Exit status: 0 every run ok (slurm: submitted), 1 some run not ok or not finished (slurm: sbatch
 // failed), 2 bad scene or options, 130 interrupted.
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
 #include "engine/scene/scene_reader.hpp"
+#include "studies/report/contact_sheet.hpp"
 #include "studies/sweep/local_sweep.hpp"
 #include "studies/sweep/slurm_sweep.hpp"
 #include "studies/sweep/sweep_collect.hpp"
@@ -32,12 +38,32 @@ namespace {
 
 void report(const std::string& line) { std::fprintf(stderr, "firn sweep: %s\n", line.c_str()); }
 
+// What a sweep that ran or was collected here writes after its runs: the contact sheets when the
+// runs were rendered, and with --report the page; returns the exit status, `status` unless one fails.
+int finish_sweep(const sweep::SweepPlan& plan, const std::string& render, bool write_report, int status) {
+  if (render != "none") {
+    try {
+      const std::vector<std::string> sheets = firn::report::write_contact_sheets(plan);
+      if (!sheets.empty()) std::fprintf(stderr, "firn sweep: contact sheets in %s/contact_sheets\n", plan.out.c_str());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "firn sweep: contact sheets: %s\n", e.what());
+      status = status ? status : 1;
+    }
+  }
+  if (write_report) {
+    const int written = write_report_page(plan.out, "firn sweep");
+    status = status ? status : written;
+  }
+  return status;
+}
+
 // firn sweep --collect DIR; returns the exit status.
-int collect(const std::string& dir, const std::string& plot) {
-  const sweep::CollectedSweep c = sweep::collect_sweep(dir, plot, shipped_scenes(), report);
+int collect(const std::string& dir, const std::string& plot, bool write_report) {
+  const sweep::SweepPlan plan = sweep::saved_plan(dir, plot, shipped_scenes());
+  const sweep::CollectedSweep c = sweep::collect_sweep(plan, report);
   std::fprintf(stderr, "firn sweep --collect: %zu of %zu runs finished%s; %s/sweep.csv\n", c.finished, c.total,
                c.missing.empty() ? "" : (" (not yet: run " + c.missing + ")").c_str(), dir.c_str());
-  return c.missing.empty() && c.all_ok ? 0 : 1;
+  return finish_sweep(plan, sweep::read_sweep_args(dir).render, write_report, c.missing.empty() && c.all_ok ? 0 : 1);
 }
 
 }  // namespace
@@ -45,6 +71,7 @@ int collect(const std::string& dir, const std::string& plot) {
 void add_sweep_command(CLI::App& app) {
   struct Options : sweep::SweepOptions {
     std::string scheduler = "local", collect, resume_dir;
+    bool report = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App* sweep = app.add_subcommand("sweep", "run every combination of scene values; one row per run in sweep.csv");
@@ -73,9 +100,14 @@ void add_sweep_command(CLI::App& app) {
                     "continue the sweep in DIR: keep its finished runs, resume the interrupted ones, run the rest");
   sweep->add_option("--checkpoint-every", o->checkpoint_every,
                     "each run's firn run --checkpoint-every (e.g. 50ms), so that a killed sweep resumes its runs");
+  sweep->add_option("--render", o->render, "each run draws its frames (none, spheres or surface); the sweep writes "
+                                           "contact sheets of every run's middle and last frame")
+      ->check(CLI::IsMember({"none", "spheres", "surface"}))
+      ->capture_default_str();
+  sweep->add_flag("--report", o->report, "write DIR/report.html (firn report DIR) when the runs have ended");
   sweep->callback([o]() {
     const bool defines_runs = !o->scene.empty() || !o->varies.empty() || !o->sets.empty() || o->preview ||
-                              !o->at.empty() || !o->checkpoint_every.empty();
+                              !o->at.empty() || !o->checkpoint_every.empty() || o->render != "none";
     const std::string reads_args = !o->collect.empty() ? "--collect" : !o->resume_dir.empty() ? "--resume" : "";
     if (!o->collect.empty() && !o->resume_dir.empty()) {
       std::fprintf(stderr, "firn sweep: give --collect DIR or --resume DIR, not both\n");
@@ -88,13 +120,18 @@ void add_sweep_command(CLI::App& app) {
       else
         std::fprintf(stderr,
                      "firn sweep: %s DIR reads the sweep's scene and values from DIR/sweep.args; give no scene, "
-                     "--vary, --set, --at, --preview or --checkpoint-every with it\n",
+                     "--vary, --set, --at, --preview, --checkpoint-every or --render with it\n",
                      reads_args.c_str());
       set_exit_status(2);
       return;
     }
     if (!o->resume_dir.empty() && o->scheduler != "local") {
       std::fprintf(stderr, "firn sweep: --resume runs here; a Slurm sweep's runs resume with firn run --resume\n");
+      set_exit_status(2);
+      return;
+    }
+    if (o->report && o->scheduler == "slurm") {
+      std::fprintf(stderr, "firn sweep: a Slurm sweep's report waits for its runs: firn sweep --collect DIR --report\n");
       set_exit_status(2);
       return;
     }
@@ -105,7 +142,7 @@ void add_sweep_command(CLI::App& app) {
     }
     if (!o->collect.empty()) {
       try {
-        set_exit_status(collect(o->collect, o->plot));
+        set_exit_status(collect(o->collect, o->plot, o->report));
       } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "firn sweep: %s\n", e.what());
         set_exit_status(2);
@@ -143,8 +180,12 @@ void add_sweep_command(CLI::App& app) {
     }
     try {
       sweep::save_sweep_args(*o, plan);
-      set_exit_status(o->scheduler == "slurm" ? sweep::submit_slurm_sweep(*o, plan, report)
-                                              : sweep::run_local_sweep(*o, plan, report));
+      if (o->scheduler == "slurm") {
+        set_exit_status(sweep::submit_slurm_sweep(*o, plan, report));
+      } else {
+        const int status = sweep::run_local_sweep(*o, plan, report);
+        set_exit_status(status == 130 ? status : finish_sweep(plan, o->render, o->report, status));
+      }
     } catch (const std::exception& e) {
       std::fprintf(stderr, "firn sweep: %s\n", e.what());
       set_exit_status(1);

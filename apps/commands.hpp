@@ -13,12 +13,18 @@ void add_verify_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
+void add_report_command(CLI::App& app);
 void add_study_command(CLI::App& app);
 void add_help_command(CLI::App& app);
 
 // firn render OUTDIR ... and firn bench render ... (without the renderer: apps/render_unavailable.cpp).
 void add_render_command(CLI::App& app);
 void add_bench_render_command(CLI::App& bench);
+
+// Writes DIR/report.html for a run or a sweep (firn report, and --report of firn run and firn
+// sweep), saying where on standard output or what failed on standard error as `program`; returns
+// the exit status: 0 written, 1 a file could not be read or written, 2 DIR is neither kind of folder.
+int write_report_page(const std::string& dir, const char* program);
 
 // Sub-commands of `firn study`.
 void add_study_accuracy_command(CLI::App& study_command);

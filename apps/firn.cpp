@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   firn::app::add_render_command(app);
   firn::app::add_check_command(app);
   firn::app::add_sweep_command(app);
+  firn::app::add_report_command(app);
   firn::app::add_study_command(app);
   firn::app::add_help_command(app);
   try {

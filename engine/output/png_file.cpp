@@ -27,6 +27,10 @@ unsigned char* zlib_level1_compress(unsigned char* data, int length, int* out_le
 #define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
+#define STBI_ONLY_PNG
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
 
 namespace firn {
 
@@ -49,6 +53,16 @@ void write_png_rgb(const std::string& path, int width, int height, const std::ui
   AtomicFile f(path);
   f.stream().write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
   f.commit();
+}
+
+Image read_png_rgb(const std::string& path) {
+  Image image;
+  int channels = 0;
+  unsigned char* pixels = stbi_load(path.c_str(), &image.width, &image.height, &channels, 3);
+  if (!pixels) throw std::runtime_error(path + ": cannot read the PNG (" + stbi_failure_reason() + ")");
+  image.rgb.assign(pixels, pixels + std::size_t(image.width) * std::size_t(image.height) * 3);
+  stbi_image_free(pixels);
+  return image;
 }
 
 }  // namespace firn

@@ -1,6 +1,7 @@
 // PNG files through stb_image_write (Debian's libstb-dev), deflated by zlib at level 1 in place of
 // stb's own compressor (STBIW_ZLIB_COMPRESS; DESIGN.md section 7: several times faster, files a
-// little larger). The one PNG encoder of firn: footprint maps and rendered frames.
+// little larger). The one PNG encoder of firn: footprint maps and rendered frames; and the decoder
+// (stb_image) that reads frames back for a sweep's contact sheets.
 #pragma once
 
 #include <cstdint>
@@ -24,5 +25,9 @@ inline std::vector<unsigned char> encode_png(const Image& image) {
 inline void write_png(const std::string& path, const Image& image) {
   write_png_rgb(path, image.width, image.height, image.rgb.data());
 }
+
+// A PNG file's pixels as 8-bit RGB (grey and alpha converted); throws std::runtime_error when the
+// file cannot be read or decoded.
+Image read_png_rgb(const std::string& path);
 
 }  // namespace firn

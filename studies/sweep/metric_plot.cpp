@@ -19,9 +19,9 @@ struct Curve {
 
 std::optional<PlotFiles> metric_plot(const std::string& metric, const std::vector<VariedKey>& keys,
                                       const std::vector<RunRecord>& runs) {
-  if (keys.empty()) return std::nullopt;
   // With one varied key every run is a curve of one panel (the thesis' Figure 4.2); with more, the
-  // curves of each panel, panels in the order of the first key's values.
+  // curves of each panel, panels in the order of the first key's values; with none, one run's
+  // history (firn report).
   const bool panel_per_value = keys.size() > 1;
   const std::size_t curve_keys_from = panel_per_value ? 1 : 0;
   std::vector<std::vector<Curve>> panels(panel_per_value ? keys[0].values.size() : 1);
@@ -29,8 +29,13 @@ std::optional<PlotFiles> metric_plot(const std::string& metric, const std::vecto
   for (const RunRecord& run : runs) {
     if (!run.metrics || run.values.size() != keys.size()) continue;
     const int c = run.metrics->column_index(metric), t = run.metrics->column_index("time");
-    const auto value = std::find(keys[0].values.begin(), keys[0].values.end(), run.values[0]);
-    if (c < 0 || value == keys[0].values.end()) continue;
+    if (c < 0) continue;
+    std::size_t panel = 0;
+    if (!keys.empty()) {
+      const auto value = std::find(keys[0].values.begin(), keys[0].values.end(), run.values[0]);
+      if (value == keys[0].values.end()) continue;
+      if (panel_per_value) panel = std::size_t(value - keys[0].values.begin());
+    }
     Curve curve;
     for (std::size_t k = curve_keys_from; k < keys.size(); ++k)
       curve.title += (k > curve_keys_from ? ", " : "") + keys[k].key + " = " + run.values[k];
@@ -40,7 +45,7 @@ std::optional<PlotFiles> metric_plot(const std::string& metric, const std::vecto
       lo = std::min(lo, row[c]), hi = std::max(hi, row[c]);
       t_lo = std::min(t_lo, row[t]), t_hi = std::max(t_hi, row[t]);
     }
-    if (!curve.points.empty()) panels[panel_per_value ? value - keys[0].values.begin() : 0].push_back(std::move(curve));
+    if (!curve.points.empty()) panels[panel].push_back(std::move(curve));
   }
   std::size_t used = 0;
   for (const auto& p : panels) used += !p.empty();
@@ -48,12 +53,15 @@ std::optional<PlotFiles> metric_plot(const std::string& metric, const std::vecto
 
   const std::size_t cols = std::min<std::size_t>(used, 3), rows = (used + cols - 1) / cols;
   PlotFiles plot;
-  plot.data = "# " + metric + " against time (s) for every run of the sweep; one block per curve of " + metric +
+  plot.data = "# " + metric + " against time (s)" + (keys.empty() ? "" : " for every run of the sweep") +
+              "; one block per curve of " + metric +
               ".gp, in the order plotted\n";
   std::string& s = plot.script;
-  s = "# " + metric + " against time for every run of the sweep: " +
-      (panel_per_value ? "one panel per value of " + keys[0].key + ", one curve per\n# combination of the other varied keys"
-                       : "one curve per value of " + keys[0].key) +
+  s = "# " + metric + " against time" +
+      (keys.empty()       ? std::string(" in the run")
+       : panel_per_value ? " for every run of the sweep: one panel per value of " + keys[0].key +
+                               ", one curve per\n# combination of the other varied keys"
+                         : " for every run of the sweep: one curve per value of " + keys[0].key) +
       ". Data: " + metric + ".dat. Re-plot from this folder with: gnuplot " + metric + ".gp\n";
   s += gnuplot_png_output(metric + ".png", int(520 * cols), int(440 * rows));
   s += "set multiplot layout " + std::to_string(rows) + "," + std::to_string(cols) + " title " + gnuplot_quoted(metric) + "\n";

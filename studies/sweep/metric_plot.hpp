@@ -1,7 +1,7 @@
 // gnuplot files drawing one scene metric against time for every run of a sweep, grouped like the
 // thesis' Figures 5.5 and 5.6: one panel per value of the first varied key, one curve per
 // combination of the other keys, labelled with their values; with one varied key, like its
-// Figure 4.2: one panel, one curve per value.
+// Figure 4.2: one panel, one curve per value; with no varied key, one run's history (firn report).
 #pragma once
 
 #include <optional>

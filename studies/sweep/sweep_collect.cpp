@@ -8,12 +8,19 @@
 
 namespace firn::sweep {
 
-CollectedSweep collect_sweep(const std::string& dir, const std::string& plot, const std::string& shipped_scenes,
-                             const SweepReport& report) {
+SweepPlan saved_plan(const std::string& dir, const std::string& plot, const std::string& shipped_scenes) {
   SweepOptions o = read_sweep_args(dir);
   o.shipped_scenes = shipped_scenes;
   if (!plot.empty()) o.plot = plot;
-  const SweepPlan plan = make_plan(o);
+  return make_plan(o);
+}
+
+CollectedSweep collect_sweep(const std::string& dir, const std::string& plot, const std::string& shipped_scenes,
+                             const SweepReport& report) {
+  return collect_sweep(saved_plan(dir, plot, shipped_scenes), report);
+}
+
+CollectedSweep collect_sweep(const SweepPlan& plan, const SweepReport& report) {
   FinishedRuns finished(plan, report);
   CollectedSweep c;
   for (std::size_t i = 0; i < plan.combinations.size(); ++i) {

@@ -15,8 +15,15 @@ struct CollectedSweep {
   bool all_ok = false;  // every finished run's status is ok
 };
 
-// `plot`: the metrics to plot, or empty for the sweep's own. Throws std::invalid_argument (not a
-// sweep's folder) or SceneError (its scene no longer loads).
+// The plan of the sweep in DIR, from DIR/sweep.args; `plot`: the metrics to plot, or empty for the
+// sweep's own. Throws std::invalid_argument (not a sweep's folder) or SceneError (its scene no
+// longer loads).
+SweepPlan saved_plan(const std::string& dir, const std::string& plot, const std::string& shipped_scenes);
+
+// Writes the plan's sweep.csv and plots from its finished runs.
+CollectedSweep collect_sweep(const SweepPlan& plan, const SweepReport& report);
+
+// collect_sweep(saved_plan(dir, plot, shipped_scenes), report).
 CollectedSweep collect_sweep(const std::string& dir, const std::string& plot, const std::string& shipped_scenes,
                              const SweepReport& report);
 

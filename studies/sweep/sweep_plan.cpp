@@ -54,6 +54,7 @@ void save_sweep_args(const SweepOptions& o, const SweepPlan& plan) {
   if (!o.plot.empty()) text += "plot=" + o.plot + "\n";
   if (o.preview) text += "preview=true\n";
   if (!o.checkpoint_every.empty()) text += "checkpoint_every=" + o.checkpoint_every + "\n";
+  if (o.render != "none") text += "render=" + o.render + "\n";
   std::filesystem::create_directories(plan.out);
   write_file_atomically(plan.out + "/sweep.args", text);
 }
@@ -73,6 +74,7 @@ SweepOptions read_sweep_args(const std::string& dir) {
     else if (name == "plot") o.plot = value;
     else if (name == "preview") o.preview = value == "true";
     else if (name == "checkpoint_every") o.checkpoint_every = value;
+    else if (name == "render") o.render = value;
     else throw std::invalid_argument(dir + "/sweep.args: unknown line '" + line + "'");
   }
   return o;
@@ -91,6 +93,7 @@ std::vector<std::string> run_command(const SweepOptions& o, const SweepPlan& pla
   if (o.preview) argv.push_back("--preview");
   argv.insert(argv.end(), {"--backend", o.backend});
   if (!o.checkpoint_every.empty()) argv.insert(argv.end(), {"--checkpoint-every", o.checkpoint_every});
+  if (o.render != "none") argv.insert(argv.end(), {"--render", o.render});
   return argv;
 }
 
@@ -107,6 +110,7 @@ std::vector<std::string> resume_command(const SweepOptions& o, const SweepPlan& 
                                         const std::string& self) {
   std::vector<std::string> argv = {self, "run", "--resume", run_dir(plan, index), "--backend", o.backend};
   if (!o.checkpoint_every.empty()) argv.insert(argv.end(), {"--checkpoint-every", o.checkpoint_every});
+  if (o.render != "none") argv.insert(argv.end(), {"--render", o.render});
   return argv;
 }
 

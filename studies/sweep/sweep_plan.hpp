@@ -20,6 +20,7 @@ struct SweepOptions {
   std::string at, plot;        // comma-separated: times for the C@T columns, metrics to plot
   std::string backend = "openmp";
   std::string checkpoint_every;           // each run's --checkpoint-every (a time); empty: none
+  std::string render = "none";            // each run's --render: none, spheres or surface
   std::vector<std::string> varies, sets;  // "KEY=V1,V2,..." and "KEY=VALUE"
   std::vector<std::string> sbatch;        // options for a Slurm job array
   int jobs = 1;                           // runs at a time (local scheduler)
