@@ -88,6 +88,10 @@ std::string write_sweep_report(const std::string& dir, const std::string& shippe
   body += figures.empty() ? html_paragraph("No plots (no run has these metrics, or gnuplot is missing).")
                           : html_gallery(figures, 1150);
 
+  if (std::filesystem::exists(dir + "/plots/footprints.png"))
+    body += html_heading(2, "Footprints (the thesis' Figure 5.7)") +
+            html_gallery({html_figure("plots/footprints.png", "each run's last footprint, on one colour scale")}, 1150);
+
   std::string pivots;
   for (const std::string& metric : plan.plots) {
     const HtmlTable pivot = pivot_table(csv, metric);
