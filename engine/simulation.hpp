@@ -49,6 +49,8 @@
 #include "kernels/shape_functions.hpp"
 #include "kernels/step/constitutive_update.hpp"
 #include "kernels/step/elastic_energy.hpp"
+#include "kernels/step/contact_normals.hpp"
+#include "kernels/step/contact_update.hpp"
 #include "kernels/step/g2p_gather.hpp"
 #include "kernels/step/grid_update_slots.hpp"
 #include "kernels/step/load_work.hpp"
@@ -126,12 +128,14 @@ class Simulation {
     const int channels = config.transfer == Transfer::flip ? GridChannels<Transfer::flip>::kCount
                                                            : GridChannels<Transfer::apic>::kCount;
     grid_.configure(g, channels);
+    contact_.grid_b.configure(g, channels);
+    contact_.normals.configure(g, kContactNormalChannels);
   }
 
   int add_material(const MaterialInfo& info) {
     Material m{info, make_material_model<T>(info), {0, 0}, info.wave_speed(), uses_volume_averaging(info)};
-    if (m.volume_averaged && averaged_material_count() >= AveragedRanges::kMax)
-      throw std::invalid_argument("at most " + std::to_string(AveragedRanges::kMax) +
+    if (m.volume_averaged && averaged_material_count() >= ParticleRanges::kMax)
+      throw std::invalid_argument("at most " + std::to_string(ParticleRanges::kMax) +
                                   " nearly incompressible materials (F-bar volume averaging)");
     std::visit(
         [this](const auto& model) {
@@ -142,6 +146,18 @@ class Simulation {
         m.model);
     materials_.push_back(m);
     return int(materials_.size()) - 1;
+  }
+
+  // Puts `material` in contact group `group` (0, the default, or 1). Bodies of different groups
+  // move on their own grids and meet through frictional contact (kernels/step/contact_update.hpp)
+  // with `friction`; with every particle in one group the step is the single-grid one.
+  void set_contact_group(int material, int group, const Friction<double>& friction) {
+    if (material < 0 || material >= int(materials_.size())) throw std::invalid_argument("unknown material index");
+    if (group != 0 && group != 1) throw std::invalid_argument("contact group must be 0 or 1");
+    if (materials_.size() > 64) throw std::invalid_argument("contact groups take at most 64 materials");
+    contact_.group.resize(materials_.size(), 0);
+    contact_.group[std::size_t(material)] = group;
+    contact_.friction = friction;
   }
 
   // Adds particles of one material at rest in F = I, each of rest volume `volume`, all moving with
@@ -451,23 +467,53 @@ class Simulation {
     return n;
   }
 
-  // The physical index ranges of the averaged materials that have particles (valid after prepare()).
-  AveragedRanges averaged_ranges() const {
-    AveragedRanges r;
-    for (const Material& m : materials_)
-      if (m.volume_averaged && m.range.end > m.range.begin) {
-        r.begin[r.count] = m.range.begin;
-        r.end[r.count] = m.range.end;
+  // The physical index ranges of the materials with particles that `holds` picks (valid after
+  // prepare()); throws past ParticleRanges::kMax.
+  template <class Pick>
+  ParticleRanges ranges_where(Pick holds) const {
+    ParticleRanges r;
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+      if (holds(m) && materials_[m].range.end > materials_[m].range.begin) {
+        if (r.count == ParticleRanges::kMax) throw std::invalid_argument("too many materials in one particle range set");
+        r.begin[r.count] = materials_[m].range.begin;
+        r.end[r.count] = materials_[m].range.end;
         ++r.count;
       }
     return r;
+  }
+  ParticleRanges averaged_ranges() const {
+    return ranges_where([&](std::size_t m) { return materials_[m].volume_averaged; });
+  }
+
+  int contact_group(std::size_t m) const { return m < contact_.group.size() ? contact_.group[m] : 0; }
+
+  // Whether both contact groups have particles (valid after prepare()).
+  bool contact_active() const {
+    bool any[2] = {false, false};
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+      if (materials_[m].range.end > materials_[m].range.begin) any[contact_group(m)] = true;
+    return any[0] && any[1];
+  }
+
+  // The binning restricted to contact group `group`'s materials (bucket indices count only the
+  // materials with particles, as the binning does).
+  BinningView group_bins(int group) const {
+    BinningView v = binning_.view();
+    v.material_mask = 0;
+    std::size_t bucket = 0;
+    for (std::size_t m = 0; m < materials_.size(); ++m) {
+      if (materials_[m].range.end == materials_[m].range.begin) continue;
+      if (contact_group(m) == group) v.material_mask |= std::uint64_t(1) << bucket;
+      ++bucket;
+    }
+    return v;
   }
 
   // F-bar by volume averaging (kernels/step/volume_average.hpp) for the averaged materials, on the
   // grid activated by bin(), which it leaves cleared for P2G. No launch when none has particles.
   template <class ShapeT>
   void average_volume() {
-    const AveragedRanges averaged = averaged_ranges();
+    const ParticleRanges averaged = averaged_ranges();
     if (averaged.count == 0) return;
     const ParticleView<T> pv = storage_.view();
     const SparseGridView<T> gv = grid_.view();
@@ -521,16 +567,38 @@ class Simulation {
     if (budget_enabled_ && storage_.has(Attribute::body_accel))
       budget_.loads += backend_.parallel_reduce("energy_budget.loads", pv.n, 0.0, LoadWork<T>{pv, dt}, Sum{});
     const SparseGridView<T> gv = grid_.view();
-    const BinningView bins = binning_.view();
+    const bool contact = contact_active();
+    const BinningView bins = contact ? group_bins(0) : binning_.view();
     backend_.scatter_blocks("p2g", binning_.colouring(), P2GScatter<T, ShapeT, kTransfer>{pv, gv, bins, g, dt});
-    pose_colliders(dt);
+    const BinningView bins_b = contact ? group_bins(1) : bins;
+    if (contact) {
+      backend_.scatter_blocks("p2g", binning_.colouring(),
+                              P2GScatter<T, ShapeT, kTransfer>{pv, contact_.grid_b.view(), bins_b, g, dt});
+      const ParticleRanges group_b = ranges_where([&](std::size_t m) { return contact_group(m) == 1; });
+      backend_.scatter_blocks("contact.normals", binning_.colouring(),
+                              ContactNormalScatter<T, ShapeT>{pv, contact_.normals.view(), binning_.view(), g, group_b});
+    }
+    pose_colliders(dt, contact);
     backend_.parallel_for("grid_update", grid_.active_count(), GridUpdateSlots<T, kTransfer>{grid_.slots(), &grid_params_});
-    collect_reactions(double(dt));
-    if (budget_enabled_) collect_work();
+    if (contact) {
+      backend_.parallel_for("grid_update", grid_.active_count(),
+                            GridUpdateSlots<T, kTransfer>{contact_.grid_b.slots(), &contact_.params_b});
+      const Friction<T> friction{contact_.friction.law, T(contact_.friction.mu)};
+      backend_.parallel_for("contact", grid_.active_count(),
+                            ContactUpdateSlots<T, kTransfer>{grid_.slots(), contact_.grid_b.slots(),
+                                                             contact_.normals.slots(), min_node_mass_,
+                                                             T(kContactVolumeFraction) * g.dx * g.dx * g.dx, friction});
+    }
+    collect_reactions(double(dt), contact);
+    if (budget_enabled_) collect_work(contact);
     const std::vector<std::uint32_t>& blocks = binning_.particle_blocks();
-    const GuardSummary<T> guard =
+    GuardSummary<T> guard =
         backend_.gather_blocks("g2p", blocks.data(), blocks.size(),
                                G2PGather<T, ShapeT, kTransfer>{pv, gv, bins, g, dt, T(config_.flip_alpha)}, MergeGuard{});
+    if (contact)
+      guard.merge(backend_.gather_blocks(
+          "g2p", blocks.data(), blocks.size(),
+          G2PGather<T, ShapeT, kTransfer>{pv, contact_.grid_b.view(), bins_b, g, dt, T(config_.flip_alpha)}, MergeGuard{}));
     if (guard.reason != GuardReason::none) fail(guard, dt);
     max_speed_ = guard.max_speed;
   }
@@ -552,6 +620,10 @@ class Simulation {
       binning_.reordered(backend_);
     }
     grid_.activate(binning_.particle_blocks(), backend_);
+    if (contact_active()) {  // the same blocks in the same slots as grid_
+      contact_.grid_b.activate(binning_.particle_blocks(), backend_);
+      contact_.normals.activate(binning_.particle_blocks(), backend_);
+    }
   }
 
   // The constitutive update, one launch per material range (kernels/step/constitutive_update.hpp);
@@ -585,7 +657,7 @@ class Simulation {
 
   // The grid update's parameters, with the colliders posed at the end of the step; their reactions
   // are summed per block, then over blocks in slot order (the same sums for any thread count).
-  void pose_colliders(T dt) {
+  void pose_colliders(T dt, bool contact) {
     const GridGeometry<T> g = grid_.geometry();
     GridUpdateParams<T>& up = grid_params_;
     up.dt = dt;
@@ -617,15 +689,33 @@ class Simulation {
       footprint_blocks_.assign(slots * kBlockSize * kBlockSize, T(0));
       up.footprint = footprint_blocks_.data();
     }
+    if (!contact) return;
+    // Group B's grid update: the same colliders and walls, its own per-block sums.
+    GridUpdateParams<T>& b = contact_.params_b;
+    b = up;
+    contact_.reactions_b.assign(reactions_.size(), T(0));
+    b.reactions = contact_.reactions_b.data();
+    if (up.work) {
+      contact_.work_b.assign(work_.size(), T(0));
+      b.work = contact_.work_b.data();
+    }
+    if (up.footprint) {
+      contact_.footprint_b.assign(footprint_blocks_.size(), T(0));
+      b.footprint = contact_.footprint_b.data();
+    }
   }
 
-  // Sums the per-block collider reactions and footprint columns of the last grid update.
-  void collect_reactions(double dt) {
+  // Sums the per-block collider reactions and footprint columns of the last grid update (both
+  // contact groups' with `contact`, slot by slot).
+  void collect_reactions(double dt, bool contact) {
     const std::size_t count = colliders_.size(), slots = grid_.active_count();
     for (std::size_t c = 0; c < count; ++c) {
       double f[kReactionComponents] = {0, 0, 0, 0, 0, 0};
       for (std::size_t s = 0; s < slots; ++s)
-        for (int i = 0; i < kReactionComponents; ++i) f[i] += double(reactions_[(s * count + c) * kReactionComponents + i]);
+        for (int i = 0; i < kReactionComponents; ++i) {
+          const std::size_t k = (s * count + c) * kReactionComponents + std::size_t(i);
+          f[i] += double(reactions_[k]) + (contact ? double(contact_.reactions_b[k]) : 0.0);
+        }
       colliders_[c].add_reaction(f, f + 3, dt);
     }
     if (footprint_collider_ < 0) return;
@@ -635,18 +725,24 @@ class Simulation {
         for (int lz = 0; lz < kBlockSize; ++lz) {
           const int i = b[0] * kBlockSize + lx, k = b[2] * kBlockSize + lz;
           if (i < footprint_.nx && k < footprint_.nz)
+          {
+            const std::size_t q = s * kBlockSize * kBlockSize + std::size_t(lx * kBlockSize + lz);
             footprint_.impulse[std::size_t(i) * std::size_t(footprint_.nz) + std::size_t(k)] +=
-                dt * double(footprint_blocks_[s * kBlockSize * kBlockSize + std::size_t(lx * kBlockSize + lz)]);
+                dt * (double(footprint_blocks_[q]) + (contact ? double(contact_.footprint_b[q]) : 0.0));
+          }
         }
     }
     footprint_.time += dt;
   }
 
   // Adds the per-block work of the last grid update to the budget, over blocks in slot order.
-  void collect_work() {
+  void collect_work(bool contact) {
     double w[kWorkKinds] = {0, 0};
     for (std::size_t s = 0; s < grid_.active_count(); ++s)
-      for (int k = 0; k < kWorkKinds; ++k) w[k] += double(work_[s * kWorkKinds + std::size_t(k)]);
+      for (int k = 0; k < kWorkKinds; ++k) {
+        const std::size_t q = s * kWorkKinds + std::size_t(k);
+        w[k] += double(work_[q]) + (contact ? double(contact_.work_b[q]) : 0.0);
+      }
     budget_.gravity += w[kGravityWork];
     budget_.colliders += w[kColliderWork];
   }
@@ -738,6 +834,15 @@ class Simulation {
   std::vector<Load> loads_;
   std::vector<int> staged_material_;  // material of each particle added since the last prepare()
   SparseGrid<T> grid_;
+  // Multi-velocity-field contact: group B's grid, the normals' grid and group B's grid-update
+  // buffers; allocated and used only while both groups have particles (contact_active()).
+  struct ContactFields {
+    std::vector<int> group;  // per material: 0 or 1 (missing: 0)
+    Friction<double> friction{};
+    SparseGrid<T> grid_b, normals;
+    GridUpdateParams<T> params_b{};
+    std::vector<T> reactions_b, work_b, footprint_b;
+  } contact_;
   ParticleBinning binning_;
   T max_speed_ = T(0);
   // A node with less than this fraction of the lightest particle's mass counts as empty: its

@@ -113,6 +113,8 @@ struct SceneSpec {
   std::string precision = "float";
   std::vector<MaterialInfo> materials;                // one per [materials.NAME] table, in name order
   std::vector<MaterialVariation> material_variations;  // per table: its `vary` (none: uniform)
+  std::vector<int> contact_groups;                     // per table: its contact_group (0 or 1)
+  Friction<double> contact_friction{};                 // [contact]
   std::vector<BodySpec> bodies;
   std::vector<ColliderSpec> colliders;
   std::vector<LoadSpec> loads;

@@ -51,6 +51,9 @@ template <class T, class Backend>
 BuiltScene build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
   const SceneMaterials materials(scene);
   for (const MaterialInfo& m : materials.engine()) sim.add_material(m);
+  for (std::size_t t = 0; t < scene.contact_groups.size(); ++t)
+    for (int m = 0; m < materials.count(int(t)) && scene.contact_groups[t] != 0; ++m)
+      sim.set_contact_group(materials.first(int(t)) + m, scene.contact_groups[t], scene.contact_friction);
   if (scene.tire) sim.enable(Attribute::x0);  // the displaced-snow metric compares with it
   std::vector<Point> positions, velocities;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {

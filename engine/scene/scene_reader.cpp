@@ -433,7 +433,7 @@ MaterialVariation read_variation(const Context& ctx, TableReader& material, cons
 }
 
 MaterialInfo read_material(const Context& ctx, const std::string& name, const toml::table& given, toml::table& out,
-                           std::optional<Point>& color, MaterialVariation& variation) {
+                           std::optional<Point>& color, MaterialVariation& variation, int& contact_group) {
   const std::string prefix = "materials." + name;
   // Merge the preset's values under the scene's keys.
   toml::table merged = given;
@@ -479,6 +479,7 @@ MaterialInfo read_material(const Context& ctx, const std::string& name, const to
   }
   for (const MaterialParameter& p : find_material_model(info.model)->parameters)
     info.params[p.key] = p.choices.empty() ? r.number(p.key) : double(r.choice_index(p.key));
+  contact_group = int(r.integer("contact_group"));
   color = r.optional_vec3("color");
   if (color)
     for (double c : *color)
@@ -515,7 +516,7 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
   for (const std::string& a : options.overrides) apply_override(ctx, root, a);
 
   const std::vector<std::string> sections = {"simulation", "walls", "materials", "bodies",  "colliders",
-                                             "tire",       "conveyor", "loads",   "metrics", "render"};
+                                             "tire",       "conveyor", "loads",   "contact", "metrics", "render"};
   for (const auto& [name, node] : root) {
     const std::string key(name.str());
     if (std::find(sections.begin(), sections.end(), key) == sections.end())
@@ -600,8 +601,9 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
       toml::table mo;
       s.render.material_colors.emplace_back();
       s.material_variations.emplace_back();
-      s.materials.push_back(
-          read_material(ctx, n, *node.as_table(), mo, s.render.material_colors.back(), s.material_variations.back()));
+      s.contact_groups.emplace_back();
+      s.materials.push_back(read_material(ctx, n, *node.as_table(), mo, s.render.material_colors.back(),
+                                          s.material_variations.back(), s.contact_groups.back()));
       o.insert(n, std::move(mo));
     }
     out.insert("materials", std::move(o));
@@ -776,6 +778,13 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
   // [metrics], [render]
   {
     toml::table mo, ro;
+    {
+      toml::table co;
+      TableReader c(ctx, subtable(ctx, root, "contact", empty), scene_section("contact"), "contact", co);
+      s.contact_friction = read_friction(c);
+      c.finish();
+      out.insert("contact", std::move(co));
+    }
     TableReader m(ctx, subtable(ctx, root, "metrics", empty), scene_section("metrics"), "metrics", mo);
     s.metrics.displaced_distance = m.number("displaced_distance");
     s.metrics.footprint = m.boolean("footprint");

@@ -109,6 +109,10 @@ std::vector<SectionSpec> build_schema() {
                             {"G", K::number, Q::pressure, "", false, "shear modulus", 0, kInf, true},
                             {"color", K::vector3, Q::dimensionless, "", false,
                              "render colour [r, g, b], each in [0, 1] (default: a built-in palette)"},
+                            {"contact_group", K::integer, Q::dimensionless, "0", false,
+                             "contact group, 0 or 1: bodies of different groups move on their own grids and meet "
+                             "through frictional contact ([contact]) instead of sticking as one continuum",
+                             0, 1},
                             {"vary", K::table, Q::dimensionless, "", false,
                              "parameters that vary in space by a seeded noise field (see [materials.NAME.vary]), e.g. "
                              "`vary = { density = 0.15, p0 = 0.3, scale = \"15 mm\", seed = 1 }`"},
@@ -270,6 +274,19 @@ std::vector<SectionSpec> build_schema() {
                    {"force", K::vector3, Q::force, "", true, "total force"},
                    {"ramp_time", K::number, Q::time, "0.0", false,
                     "the force grows linearly from zero over this time (0: applied at once)", 0, kInf},
+               }});
+  s.push_back({"contact", false,
+               "Contact between the two contact groups of [materials.NAME] contact_group (multi-velocity-field "
+               "contact, Bardenhagen et al. 2000): at a grid node both groups reach, the normal part of their "
+               "relative velocity is removed while they approach and the tangential part slowed by friction. "
+               "Used only when both groups have particles.",
+               {
+                   {"friction_law", K::choice, Q::dimensionless, "\"coulomb\"", false,
+                    "coulomb, or velocity_dependent: the thesis' Eq. 4.9 (see [[colliders]])", -kInf, kInf, false,
+                    kFrictionLaws},
+                   {"friction", K::number, Q::dimensionless, "0.0", false,
+                    "friction coefficient between the groups (velocity_dependent: mu0, the value at 1 mm/s)", 0,
+                    kInf},
                }});
   s.push_back({"metrics", false,
                "Scene metrics beyond the standard metrics.csv columns. Every collider adds its force and "

@@ -24,6 +24,20 @@
 
 namespace firn {
 
+// A whole block of a scatter on one thread: every particle binned to block b (in its buckets'
+// sorted order) adds into a scratch over the block's window, which is then added to the grid.
+template <class Scatter>
+FIRN_HD void scatter_block(const Scatter& scatter, std::uint32_t b) {
+  int block[3];
+  scatter.grid.block_coords(b, block);
+  typename Scatter::Scratch scratch;
+  scratch.reset(block);
+  for (std::size_t m = 0; m < scatter.bins.material_count; ++m)
+    for (std::uint32_t s = scatter.bins.bucket_begin(m, b), e = scatter.bins.bucket_end(m, b); s < e; ++s)
+      scatter.particle(s, scratch);
+  scratch.flush(scatter.grid);
+}
+
 template <class T, class ShapeT, Transfer kTransfer>
 struct P2GScatter {
   static constexpr int kSupport = ShapeT::kSupport;
@@ -43,15 +57,7 @@ struct P2GScatter {
     p2g_particle<T, ShapeT, kTransfer>(pv, bins.order[s], g, dt, out);
   }
 
-  FIRN_HD void operator()(std::uint32_t b) const {
-    int block[3];
-    grid.block_coords(b, block);
-    Scratch scratch;
-    scratch.reset(block);
-    for (std::size_t m = 0; m < bins.material_count; ++m)
-      for (std::uint32_t s = bins.bucket_begin(m, b), e = bins.bucket_end(m, b); s < e; ++s) particle(s, scratch);
-    scratch.flush(grid);
-  }
+  FIRN_HD void operator()(std::uint32_t b) const { scatter_block(*this, b); }
 };
 
 }  // namespace firn

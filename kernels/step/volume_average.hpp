@@ -7,7 +7,7 @@
 //   J_i = sum_p w_ip m_p J_p / sum_p w_ip m_p,     Jbar_p = sum_i w_ip J_i,
 // and F_p is rescaled to that volume, keeping its isochoric part:
 //   F_p <- (Jbar_p / J_p)^(1/3) F_p.
-// Only the particles of the averaged materials take part (AveragedRanges): a snow particle
+// Only the particles of the averaged materials take part (a ParticleRanges): a snow particle
 // touching rubber neither gives its volume to the rubber's average nor takes the rubber's.
 //
 // Two launches, as the step's P2G and G2P (kernels/step/p2g_scatter.hpp, g2p_gather.hpp): the
@@ -25,22 +25,11 @@
 #include "kernels/hd.hpp"
 #include "kernels/mat3.hpp"
 #include "kernels/particle_attributes.hpp"
+#include "kernels/particle_ranges.hpp"
 #include "kernels/particle_state.hpp"
 #include "kernels/stencil.hpp"
 
 namespace firn {
-
-// The physical index ranges [begin, end) of the averaged materials' particles.
-struct AveragedRanges {
-  static constexpr int kMax = 8;
-  std::size_t begin[kMax], end[kMax];
-  int count = 0;
-  FIRN_HD bool holds(std::size_t p) const {
-    for (int r = 0; r < count; ++r)
-      if (p >= begin[r] && p < end[r]) return true;
-    return false;
-  }
-};
 
 template <class T, class ShapeT>
 struct VolumeScatter {
@@ -54,7 +43,7 @@ struct VolumeScatter {
   SparseGridView<T> grid;
   BinningView bins;
   GridGeometry<T> g;
-  AveragedRanges averaged;
+  ParticleRanges averaged;
 
   // A particle of another material adds zeros over its stencil, so that a backend that stages
   // every particle of a block (the CUDA backend) sees a full stencil and the sums are unchanged.
@@ -98,7 +87,7 @@ struct VolumeGather {
   SparseGridView<T> grid;
   BinningView bins;
   GridGeometry<T> g;
-  AveragedRanges averaged;
+  ParticleRanges averaged;
 
   FIRN_HD void particle(std::uint32_t s, const Window& window, std::size_t& rescaled) const {
     const std::size_t p = bins.order[s];
