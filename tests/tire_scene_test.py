@@ -1,6 +1,7 @@
 """End-to-end checks of the tire experiment (issue 5): scenes/tire_on_snow.toml at preview
 resolution, for each tread and for a loaded axle, and a small `firn sweep` of it; the free-rolling
-loaded wheel of scenes/tire_fresh_snow.toml (issue 16) and its sinkage and motion resistance.
+loaded wheel of scenes/tire_fresh_snow.toml (issue 16) and its sinkage and motion resistance; the
+deformable rubber tire of scenes/tire_rubber_on_ground.toml (issue 17) landing on the road.
 
 Usage: python3 tire_scene_test.py FIRN REPO_ROOT SCRATCH_DIR TEST
 """
@@ -14,6 +15,7 @@ import subprocess
 from end_to_end import FIRN, ROOT, SCRATCH, TEST, check, fresh
 SCENE = os.path.join(ROOT, "scenes", "tire_on_snow.toml")
 FRESH_SNOW = os.path.join(ROOT, "scenes", "tire_fresh_snow.toml")
+RUBBER = os.path.join(ROOT, "scenes", "tire_rubber_on_ground.toml")
 TIRE_COLUMNS = ["traction", "vertical_load", "axle_torque", "motion_resistance_coefficient", "slip_ratio",
                 "axle_height", "sinkage", "peak_pressure", "displaced", "accumulated", "injected", "removed",
                 "tire_fx", "ground_fy"]
@@ -98,4 +100,19 @@ def test_sweep():
         check(os.path.getsize(os.path.join(out, "plots", "accumulated.png")) > 0, "no accumulated plot")
 
 
-{"treads": test_treads, "loaded_axle": test_loaded_axle, "free_wheel": test_free_wheel, "sweep": test_sweep}[TEST]()
+def test_rubber_tire():
+    # The deformable tire (issue 17) lands on the road by 30 ms: its rubber, not its rim, carries it
+    # (the axle stays above where the rim would meet the road), the road pushes back, and the
+    # rubber particles are not counted as snow.
+    out, rows = preview_run("rubber", scene=RUBBER, end="35 ms")
+    heights = [float(r["axle_height"]) for r in rows]
+    check(min(heights) < 0.2, f"the tire never reached the road: axle heights {heights}")
+    check(min(heights) > 0.168 + 0.005, f"the rim reached the road: axle heights {heights}")
+    check(max(float(r["vertical_load"]) for r in rows) > 500, "the road never pushed the tire up")
+    check(all(float(r["accumulated"]) == 0 and float(r["displaced"]) == 0 for r in rows),
+          "rubber particles counted as snow")
+    check(not os.path.exists(os.path.join(out, "footprint")), "a rubber tire wrote a rigid tire's footprint")
+
+
+{"treads": test_treads, "loaded_axle": test_loaded_axle, "free_wheel": test_free_wheel, "sweep": test_sweep,
+ "rubber_tire": test_rubber_tire}[TEST]()

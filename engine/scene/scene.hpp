@@ -57,6 +57,9 @@ struct TireSpec {
   double inertia = 0;  // free spin: moment of inertia about the axle (kg m^2)
   WallType boundary = WallType::separate;
   Friction<double> friction{};
+  bool rubber = false;      // body = "rubber": particles of `material` on a rigid rim
+  int material = -1;        // rubber: its [materials.NAME] table
+  double rim_radius = 0;    // rubber: radius - tread_depth - carcass
 };
 
 // A conveyor snow bed (issue 5): the ground y <= `ground` moves toward -x at `speed` carrying a

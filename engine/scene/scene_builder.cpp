@@ -57,7 +57,7 @@ ColliderBody collider_body(const ColliderSpec& c) {
   return ColliderBody(k);
 }
 
-ColliderBody tire_body(const TireSpec& t) {
+Collider<double> tire_solid(const TireSpec& t) {
   Collider<double> k;
   k.shape = ColliderShape::tire;
   k.boundary = t.boundary;
@@ -65,6 +65,17 @@ ColliderBody tire_body(const TireSpec& t) {
   k.tire = make_tire_shape(t.tread, t.radius, t.width, t.tread_depth, t.pitches);
   for (int d = 0; d < 3; ++d) k.center[d] = t.center[d];
   k.angular_velocity[2] = -t.speed / t.radius;  // the tread at the bottom moves toward -x
+  return k;
+}
+
+ColliderBody tire_body(const TireSpec& t) {
+  Collider<double> k = tire_solid(t);
+  if (t.rubber) {  // the rim under the carcass: a sticky cylinder along z, turning as the tire
+    k.shape = ColliderShape::cylinder;
+    k.radius = t.rim_radius;
+    k.half[2] = 0.5 * t.width;
+    k.boundary = WallType::sticky;
+  }
   ColliderBody body(k);
   if (t.loaded) {
     body.motion = ColliderBody::Motion::loaded_axle;
@@ -100,6 +111,23 @@ std::vector<Collider<double>> scene_colliders_at(const SceneSpec& scene, double 
     out.push_back(b.collider);
   }
   return out;
+}
+
+void fill_rubber_tire(const SceneSpec& scene, std::vector<Point>& positions, std::vector<Point>& velocities) {
+  const TireSpec& t = *scene.tire;
+  const Collider<double> solid = tire_solid(t);
+  const Point lo = {t.center[0] - t.radius, t.center[1] - t.radius, t.center[2] - 0.5 * t.width};
+  const Point hi = {t.center[0] + t.radius, t.center[1] + t.radius, t.center[2] + 0.5 * t.width};
+  positions = fill_lattice(scene.config.domain_min, scene.config.dx, scene.per_axis(), lo, hi, [&](const Point& p) {
+    const double rx = p[0] - t.center[0], ry = p[1] - t.center[1];
+    double n[3];
+    return rx * rx + ry * ry >= t.rim_radius * t.rim_radius && solid.distance(p.data(), n) < 0;
+  });
+  if (positions.empty()) throw SceneError(scene.path + ": [tire] the rubber tire has no particles (finer dx needed)");
+  const double w = solid.angular_velocity[2];
+  velocities.resize(positions.size());
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    velocities[i] = {-w * (positions[i][1] - t.center[1]), w * (positions[i][0] - t.center[0]), 0};
 }
 
 void fill_body(const SceneSpec& scene, std::size_t index, std::vector<Point>& positions, std::vector<Point>& velocities) {

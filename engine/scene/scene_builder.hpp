@@ -21,8 +21,15 @@ namespace firn {
 // for a body that gets no particles.
 void fill_body(const SceneSpec& scene, std::size_t index, std::vector<Point>& positions, std::vector<Point>& velocities);
 
+// The lattice sites of a rubber tire (inside its tread's solid, outside its rim) and their
+// velocities, turning with the tire at its starting rate.
+void fill_rubber_tire(const SceneSpec& scene, std::vector<Point>& positions, std::vector<Point>& velocities);
+
 // The engine's colliders for a scene's [[colliders]] entry, its [tire] and its [conveyor] ground.
 ColliderBody collider_body(const ColliderSpec& spec);
+// The tire's solid (its tread's signed distance) at its starting pose, turning at its starting
+// rate; its collider when rigid, the rubber's extent when rubber (whose collider is the rim).
+Collider<double> tire_solid(const TireSpec& spec);
 ColliderBody tire_body(const TireSpec& spec);
 // The belt's plane lies half a cell above `ground`, so that the node row nearest the bed's lowest
 // particles is the belt's whatever the ground's height: a node on a collider's surface is outside
@@ -35,10 +42,12 @@ ColliderBody ground_body(const ConveyorSpec& spec, double dx);
 // turning at its starting rate.
 std::vector<Collider<double>> scene_colliders_at(const SceneSpec& scene, double time);
 
-// Which of the simulation's colliders the scene's tire and conveyor ground are (-1: none).
+// Which of the simulation's colliders the scene's tire (a rubber tire's rim) and conveyor ground
+// are (-1: none), and the engine materials of a rubber tire (first, count; count 0: none).
 struct BuiltScene {
   int tire = -1;
   int ground = -1;
+  int rubber_first = 0, rubber_count = 0;
 };
 
 // Rest volume of one particle: the lattice cell (dx / per_axis)^3.
@@ -62,6 +71,13 @@ BuiltScene build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
                         particle_volume(scene));
   }
   BuiltScene built;
+  if (scene.tire && scene.tire->rubber) {
+    const TireSpec& t = *scene.tire;
+    fill_rubber_tire(scene, positions, velocities);
+    add_table_particles(sim, materials, t.material, positions, positions, velocities, particle_volume(scene));
+    built.rubber_first = materials.first(t.material), built.rubber_count = materials.count(t.material);
+    for (int m = 0; m < built.rubber_count; ++m) sim.set_contact_group(built.rubber_first + m, 1, t.friction);
+  }
   for (const ColliderSpec& c : scene.colliders) sim.add_collider(collider_body(c));
   if (scene.tire) built.tire = sim.add_collider(tire_body(*scene.tire));
   if (scene.conveyor) {
@@ -69,7 +85,7 @@ BuiltScene build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
     built.ground = sim.add_collider(ground_body(c, scene.config.dx));
     std::vector<Point> bed = Conveyor(scene, c).initial_bed();
     if (scene.tire) {  // the tire starts pressed into the snow: no particles inside it
-      const Collider<double>& tire = sim.collider(built.tire).collider;
+      const Collider<double> tire = tire_solid(*scene.tire);
       bed.erase(std::remove_if(bed.begin(), bed.end(),
                                [&](const Point& p) {
                                  double n[3];

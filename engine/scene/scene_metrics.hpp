@@ -48,8 +48,10 @@ template <class T>
 struct SnowCountTerm {
   ParticleView<T> pv;
   T cx, cy, cz, radius2, half_width, shift, limit2;
+  std::size_t tire_begin, tire_end;  // a rubber tire's particles, which are not snow
 
   FIRN_HD void operator()(std::size_t p, SnowCounts& acc) const {
+    if (p >= tire_begin && p < tire_end) return;
     const T dx = pv.x[0][p] - (pv.x0[0][p] - shift), dy = pv.x[1][p] - pv.x0[1][p], dz = pv.x[2][p] - pv.x0[2][p];
     acc.displaced += dx * dx + dy * dy + dz * dz > limit2;
     const T rx = pv.x[0][p] - cx, ry = pv.x[1][p] - cy;
@@ -78,7 +80,8 @@ class SceneMetrics {
   void prepare(Simulation<T, Backend>& sim) const {
     if (writes_footprint()) sim.enable_footprint(built_.tire);
   }
-  bool writes_footprint() const { return built_.tire >= 0 && scene_.metrics.footprint; }
+  // The footprint is the rigid tire's contact pressure; a rubber tire's contact is with particles.
+  bool writes_footprint() const { return built_.tire >= 0 && scene_.metrics.footprint && !scene_.tire->rubber; }
 
   // ",NAME,..." to append to the standard header.
   std::string header() const {
@@ -158,9 +161,14 @@ class SceneMetrics {
     const T radius2 = T(scene_.tire->radius * scene_.tire->radius), half_width = T(0.5 * scene_.tire->width);
     const T shift = T(ground_speed * sim.time());
     const T limit2 = T(scene_.metrics.displaced_distance * scene_.metrics.displaced_distance);
-    return sim.backend().parallel_reduce("metrics.snow", pv.n, SnowCounts{},
-                                         SnowCountTerm<T>{pv, cx, cy, cz, radius2, half_width, shift, limit2},
-                                         MergeSnowCounts{});
+    std::size_t tire_begin = 0, tire_end = 0;  // a rubber tire's materials are consecutive ranges
+    if (built_.rubber_count > 0) {
+      tire_begin = sim.material_range(built_.rubber_first).begin;
+      tire_end = sim.material_range(built_.rubber_first + built_.rubber_count - 1).end;
+    }
+    return sim.backend().parallel_reduce(
+        "metrics.snow", pv.n, SnowCounts{},
+        SnowCountTerm<T>{pv, cx, cy, cz, radius2, half_width, shift, limit2, tire_begin, tire_end}, MergeSnowCounts{});
   }
 
   static std::string number(double v) {

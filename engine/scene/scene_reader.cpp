@@ -617,8 +617,9 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
   // [[bodies]]
   {
     const toml::array* a = table_array("bodies");
-    if ((!a || a->empty()) && !root.contains("conveyor"))
-      ctx.fail(nullptr, root.source(), "bodies", "no bodies: add a [[bodies]] table (or a [conveyor])");
+    const bool rubber_tire = root.at_path("tire.body").value<std::string>() == std::optional<std::string>("rubber");
+    if ((!a || a->empty()) && !root.contains("conveyor") && !rubber_tire)
+      ctx.fail(nullptr, root.source(), "bodies", "no bodies: add a [[bodies]] table (or a [conveyor], or a rubber [tire])");
     toml::array o;
     for (std::size_t i = 0; a && i < a->size(); ++i) {
       const std::string prefix = "bodies." + std::to_string(i);
@@ -702,9 +703,16 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     t.tread_depth = r.number("tread_depth");
     if (!(t.tread_depth < t.radius)) r.fail("tread_depth", "must be less than the radius");
     t.pitches = int(r.integer("pitches"));
-    const std::string axle = r.choice("axle"), spin = r.choice("spin");
+    const std::string axle = r.choice("axle"), spin = r.choice("spin"), body = r.choice("body");
     r.set_filter(axle);
     r.add_filter(spin);
+    r.add_filter(body);
+    t.rubber = body == "rubber";
+    if (t.rubber) {
+      t.material = material_index(r, s.materials);
+      t.rim_radius = t.radius - t.tread_depth - r.number("carcass");
+      if (!(t.rim_radius > 0)) r.fail("carcass", "leaves no rim: tread_depth + carcass must be less than the radius");
+    }
     t.loaded = axle == "loaded";
     t.free_spin = spin == "free";
     if (!t.free_spin) t.speed = r.number("speed");  // a free spin's: the conveyor's, below

@@ -219,6 +219,16 @@ std::vector<SectionSpec> build_schema() {
                    {"tread_depth", K::number, Q::length, "0.012", false, "depth of the grooves", 0, kInf},
                    {"pitches", K::integer, Q::dimensionless, "12", false,
                     "repetitions of the pattern around the circumference", 1, 200},
+                   {"body", K::choice, Q::dimensionless, "\"rigid\"", false,
+                    "rigid (a collider) or rubber: the tread and a carcass band below it filled with particles of "
+                    "`material`, driven through a rigid rim (a sticky cylinder under the carcass that takes the "
+                    "tire's spin and axle) and meeting the snow through contact between contact groups (the "
+                    "rubber's material goes in group 1, with this table's friction)",
+                    -kInf, kInf, false, {"rigid", "rubber"}},
+                   {"material", K::text, Q::dimensionless, "", true, "NAME of the rubber's [materials.NAME] table",
+                    -kInf, kInf, false, {}, "rubber"},
+                   {"carcass", K::number, Q::length, "\"20 mm\"", false,
+                    "thickness of the rubber carcass below the tread, down to the rim", 0, kInf, true, {}, "rubber"},
                    {"spin", K::choice, Q::dimensionless, "\"driven\"", false,
                     "driven (the tread turns at `speed`) or free (a towed, free-rolling wheel: its spin about the "
                     "axle turns under the snow's torque alone, from the spin whose tread speed is the conveyor's "
