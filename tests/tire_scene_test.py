@@ -103,7 +103,7 @@ def test_sweep():
 def test_rubber_tire():
     # The deformable tire (issue 17) lands on the road by 30 ms: its rubber, not its rim, carries it
     # (the axle stays above where the rim would meet the road), the road pushes back, and the
-    # rubber particles are not counted as snow.
+    # rubber particles are not counted as snow; the tread stress map is written.
     out, rows = preview_run("rubber", scene=RUBBER, end="35 ms")
     heights = [float(r["axle_height"]) for r in rows]
     check(min(heights) < 0.2, f"the tire never reached the road: axle heights {heights}")
@@ -112,6 +112,10 @@ def test_rubber_tire():
     check(all(float(r["accumulated"]) == 0 and float(r["displaced"]) == 0 for r in rows),
           "rubber particles counted as snow")
     check(not os.path.exists(os.path.join(out, "footprint")), "a rubber tire wrote a rigid tire's footprint")
+    last = f"{len(rows) - 1:05d}"
+    for ext in ["csv", "png"]:
+        check(os.path.isfile(os.path.join(out, "tread_stress", last + "." + ext)), f"no tread stress {ext}")
+    check(float(rows[-1]["peak_tread_stress"]) > 0, "the landed tread carries no stress")
 
 
 {"treads": test_treads, "loaded_axle": test_loaded_axle, "free_wheel": test_free_wheel, "sweep": test_sweep,

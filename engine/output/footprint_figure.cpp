@@ -154,11 +154,11 @@ Image draw_footprint_figure(const FootprintField& f, const FootprintFigureSpec& 
   // Title, the patch's figures, and how to read the colours.
   draw_text(image, 8, 6, spec.title, kInk, kFont);
   const std::string figures =
-      stats.peak > 0 ? format("contact patch %.1f cm2", stats.area * 1e4) + format(", mean %.3g kPa", stats.mean * kpa) +
+      stats.peak > 0 ? spec.patch + format(" %.1f cm2", stats.area * 1e4) + format(", mean %.3g kPa", stats.mean * kpa) +
                            format(", peak %.3g kPa", stats.peak * kpa)
-                     : "no contact in this frame";
+                     : "nothing above zero in this frame";
   draw_text(image, 8, 6 + kLine, figures, kInk, kFont);
-  const std::string key = spec.tread ? "grey: no contact; white: tread outline at the frame's end" : "grey: no contact";
+  const std::string key = "grey: " + spec.empty + (spec.tread ? "; white: tread outline at the frame's end" : "");
   draw_text(image, 8, image.height - kLine, key, kInk, kFont);
   return image;
 }

@@ -36,6 +36,8 @@ struct FootprintFigureSpec {
   double axle_x = 0, axle_z = 0;  // the axes' origin (the axle's position)
   double pressure_max = 0;        // the colour bar's top (Pa); 0: the field's peak
   std::string title;              // first line, e.g. "six_rib, t = 100.0 ms"
+  std::string patch = "contact patch";  // what the columns above 5% of the peak are called
+  std::string empty = "no contact";     // what a grey (zero) column means
   TreadCoverAt tread;             // the outline (empty: none)
 };
 

@@ -43,9 +43,7 @@ TreadCoverAt tread_cover(const Collider<double>& tire) {
   };
 }
 
-double write_footprint(const std::string& stem, const FootprintMap& map, const FootprintWindow& w,
-                       const Collider<double>& tire, const std::string& title) {
-  const FootprintField f = footprint_field(map, w);
+double write_map(const std::string& stem, const FootprintField& f, const FootprintFigureSpec& spec) {
   std::string csv = "z\\x";
   char buf[32];
   for (int i = 0; i < f.nx; ++i) {
@@ -63,13 +61,17 @@ double write_footprint(const std::string& stem, const FootprintMap& map, const F
     csv += '\n';
   }
   write_file_atomically(stem + ".csv", csv);
+  write_png(stem + ".png", draw_footprint_figure(f, spec));
+  return footprint_stats(f).peak;
+}
 
+double write_footprint(const std::string& stem, const FootprintMap& map, const FootprintWindow& w,
+                       const Collider<double>& tire, const std::string& title) {
   FootprintFigureSpec spec;
   spec.axle_x = w.center_x, spec.axle_z = w.center_z;
   spec.title = title;
   spec.tread = tread_cover(tire);
-  write_png(stem + ".png", draw_footprint_figure(f, spec));
-  return footprint_stats(f).peak;
+  return write_map(stem, footprint_field(map, w), spec);
 }
 
 std::optional<FootprintField> read_footprint_csv(const std::string& path) {

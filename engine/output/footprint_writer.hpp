@@ -24,8 +24,10 @@ FootprintField footprint_field(const FootprintMap& map, const FootprintWindow& w
 TreadCoverAt tread_cover(const Collider<double>& tire);
 
 // Writes STEM.csv (first row "z\x" and the column positions in m, then one row per z: its
-// position, then the pressures in Pa) and STEM.png (the figure, with the tire's tread outline and
-// `title`). Returns the peak pressure.
+// position, then the values in Pa) and STEM.png (the figure of `spec`). Returns the peak.
+double write_map(const std::string& stem, const FootprintField& field, const FootprintFigureSpec& spec);
+
+// The footprint's map of `window`, with the tire's tread outline and `title`; returns its peak.
 double write_footprint(const std::string& stem, const FootprintMap& map, const FootprintWindow& window,
                        const Collider<double>& tire, const std::string& title);
 

@@ -10,10 +10,12 @@
 //     without a conveyor; a free spin's tread speed at the frame's end), axle_height, sinkage (with
 //     a conveyor: the undisturbed snow surface ground + depth minus the tread's lowest point
 //     axle_height - radius; the depth of the wheel's bottom below the surface it rolls into),
-//     peak_pressure (the footprint's peak, Pa, when written),
+//     peak_pressure (the footprint's peak, Pa, when written; a rubber tire: peak_tread_stress, the
+//     tread stress map's peak, engine/output/tread_stress.hpp),
 //     displaced (particles farther than metrics.displaced_distance from where the undisturbed
 //     ground would have carried them: x0 - U t e_x; the thesis' Table 5.1) and accumulated
-//     (particles inside the tread's outer radius and width: snow carried in the tread, Figure 5.6);
+//     (particles inside the tread's outer radius and width: snow carried in the tread, Figure 5.6),
+//     both over snow only (a rubber tire's particles left out);
 //   a [conveyor]: injected and removed (particles, since the start);
 //   metrics.fragments: fragments and largest_fragment (engine/fragments.hpp), the particles' connected
 //     clusters of at least metrics.fragment_min_particles, linked closer than fragment_link_cells dx.
@@ -29,6 +31,7 @@
 #include "engine/scene/conveyor.hpp"
 #include "engine/fragments.hpp"
 #include "engine/output/footprint_writer.hpp"
+#include "engine/output/tread_stress.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/scene/scene_builder.hpp"
 #include "engine/simulation.hpp"
@@ -82,6 +85,10 @@ class SceneMetrics {
   }
   // The footprint is the rigid tire's contact pressure; a rubber tire's contact is with particles.
   bool writes_footprint() const { return built_.tire >= 0 && scene_.metrics.footprint && !scene_.tire->rubber; }
+  bool writes_tread_stress() const { return built_.tire >= 0 && scene_.metrics.footprint && scene_.tire->rubber; }
+  // The folder of the per-frame map: footprint (a rigid tire's contact pressure), tread_stress (a
+  // rubber tire's tread stress), or "" when the scene writes none.
+  std::string map_dir() const { return writes_footprint() ? "footprint" : writes_tread_stress() ? "tread_stress" : ""; }
 
   // ",NAME,..." to append to the standard header.
   std::string header() const {
@@ -92,6 +99,7 @@ class SceneMetrics {
       h += ",traction,vertical_load,axle_torque,motion_resistance_coefficient,slip_ratio,axle_height";
       if (conveyor_) h += ",sinkage";
       if (writes_footprint()) h += ",peak_pressure";
+      if (writes_tread_stress()) h += ",peak_tread_stress";
       h += ",displaced,accumulated";
     }
     if (conveyor_) h += ",injected,removed";
@@ -99,9 +107,9 @@ class SceneMetrics {
     return h;
   }
 
-  // ",VALUE,..." for the frame that ends now; writes the footprint files under `footprint_stem`
+  // ",VALUE,..." for the frame that ends now; writes the frame's map (map_dir()) under `map_stem`
   // (when the scene has them) and restarts the frame's averages.
-  std::string row(Simulation<T, Backend>& sim, const std::string& footprint_stem) {
+  std::string row(Simulation<T, Backend>& sim, const std::string& map_stem) {
     std::string r;
     for (std::size_t c = 0; c < sim.collider_count(); ++c) {
       ColliderBody& b = sim.collider(int(c));
@@ -129,9 +137,10 @@ class SceneMetrics {
         char title[128];
         std::snprintf(title, sizeof title, "%s tread, t = %.1f ms, contact pressure averaged over the frame",
                       t.tread.c_str(), 1e3 * sim.time());
-        r += number(write_footprint(footprint_stem, sim.footprint(), w, tire.collider, title));
+        r += number(write_footprint(map_stem, sim.footprint(), w, tire.collider, title));
         sim.footprint().reset();
       }
+      if (writes_tread_stress()) r += number(write_tread_stress(sim, map_stem));
       const SnowCounts n = count_snow(sim, ground_speed);
       r += number(double(n.displaced)) + number(double(n.accumulated));
     }
@@ -152,6 +161,31 @@ class SceneMetrics {
       for (int d = 0; d < 3; ++d) x[p][d] = double(pv.x[d][p]);
     return count_fragments(x, scene_.metrics.fragment_link_cells * scene_.config.dx,
                            std::size_t(scene_.metrics.fragment_min_particles));
+  }
+
+  // The rubber tire's tread stress (engine/output/tread_stress.hpp) with the tread's outline at the
+  // rim's pose; returns its peak.
+  double write_tread_stress(Simulation<T, Backend>& sim, const std::string& stem) const {
+    const TireSpec& t = *scene_.tire;
+    const Collider<double>& rim = sim.collider(built_.tire).collider;
+    Collider<double> solid = tire_solid(t);
+    for (int d = 0; d < 3; ++d) solid.center[d] = rim.center[d];
+    for (int i = 0; i < 9; ++i) solid.rotation[i] = rim.rotation[i];
+    const std::size_t begin = sim.material_range(built_.rubber_first).begin;
+    const std::size_t end = sim.material_range(built_.rubber_first + built_.rubber_count - 1).end;
+    const double dx = scene_.config.dx;
+    const FootprintField f =
+        tread_stress_field(sim.particles(), begin, end, solid, t.radius - t.tread_depth, 0.5 * t.width + 2 * dx, dx);
+    FootprintFigureSpec spec;
+    spec.axle_x = rim.center[0], spec.axle_z = rim.center[2];
+    char title[128];
+    std::snprintf(title, sizeof title, "%s tread, t = %.1f ms, von Mises stress of the tread below the axle",
+                  t.tread.c_str(), 1e3 * sim.time());
+    spec.title = title;
+    spec.patch = "stressed tread";
+    spec.empty = "no tread below the axle";
+    spec.tread = tread_cover(solid);
+    return write_map(stem, f, spec);
   }
 
   SnowCounts count_snow(Simulation<T, Backend>& sim, double ground_speed) const {

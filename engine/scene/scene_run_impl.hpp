@@ -93,7 +93,8 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
         scene_metrics->header() + "\n";
   }
   make_directories(options.out_dir + "/particles");
-  if (scene_metrics->writes_footprint()) make_directories(options.out_dir + "/footprint");
+  const std::string map_dir = scene_metrics->map_dir().empty() ? "" : options.out_dir + "/" + scene_metrics->map_dir();
+  if (!map_dir.empty()) make_directories(map_dir);
   if (!options.resume) write_file_atomically(options.out_dir + "/scene.resolved.toml", resolved_toml);
   double step_seconds = progress.step_seconds;
 
@@ -109,7 +110,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
                   sim.steps(), sim.time(), sim.last_dt(), sim.particle_count(), d.kinetic_energy, d.elastic_energy,
                   d.momentum[0], d.momentum[1], d.momentum[2], d.max_speed, d.min_J, b.plastic, b.gravity, b.colliders,
                   b.loads, residual);
-    progress.metrics += row + scene_metrics->row(sim, options.out_dir + "/footprint/" + frame_name(frame)) + "\n";
+    progress.metrics += row + scene_metrics->row(sim, map_dir.empty() ? "" : map_dir + "/" + frame_name(frame)) + "\n";
     write_particles_vtp(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
     write_file_atomically(options.out_dir + "/metrics.csv", progress.metrics);
     if (options.on_frame) {

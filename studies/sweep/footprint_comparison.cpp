@@ -9,10 +9,12 @@ namespace firn::sweep {
 
 std::optional<FootprintField> last_footprint(const std::string& run_dir) {
   namespace fs = std::filesystem;
-  std::error_code error;
   std::string last;
-  for (const auto& entry : fs::directory_iterator(run_dir + "/footprint", error))
-    if (entry.path().extension() == ".csv") last = std::max(last, entry.path().string());  // NNNNN: sorts by frame
+  for (const char* folder : {"/footprint", "/tread_stress"}) {  // a run writes one of them
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(run_dir + folder, error))
+      if (entry.path().extension() == ".csv") last = std::max(last, entry.path().string());  // NNNNN: by frame
+  }
   if (last.empty()) return std::nullopt;
   return read_footprint_csv(last);
 }

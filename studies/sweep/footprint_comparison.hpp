@@ -1,5 +1,6 @@
 // The footprints of a sweep's runs side by side (issue 18 item 4; the thesis' Figure 5.7 lays out
-// the three treads' stress maps together): each run's last footprint (footprint/NNNNN.csv) drawn
+// the three treads' stress maps together): each run's last footprint (footprint/NNNNN.csv, or a
+// rubber tire's tread_stress/NNNNN.csv) drawn
 // as a footprint figure on one colour scale, labelled with the run's varied values, three to a row.
 #pragma once
 
@@ -16,7 +17,8 @@ struct FootprintPanel {
   FootprintField field;
 };
 
-// The last footprint CSV (the highest frame number) under RUN_DIR/footprint; none when there is none
+// The last footprint CSV (the highest frame number) under RUN_DIR/footprint, or a rubber tire's
+// tread stress under RUN_DIR/tread_stress (engine/output/tread_stress.hpp); none when there is none
 // or it cannot be read.
 std::optional<FootprintField> last_footprint(const std::string& run_dir);
 
