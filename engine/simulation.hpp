@@ -556,7 +556,9 @@ class Simulation {
   }
 
   // One step: bin -> F-bar volume averaging (nearly incompressible materials only) -> constitutive
-  // update -> P2G -> grid update -> G2P with the stability guard.
+  // update -> P2G -> grid update -> G2P with the stability guard. With two contact groups, each
+  // group has its own P2G, grid update and G2P, and between the grid updates and G2P the contact
+  // update joins them (kernels/step/contact_update.hpp); F-bar still averages over both.
   template <class ShapeT, Transfer kTransfer>
   void step_impl(T dt) {
     bin<ShapeT>(dt);
