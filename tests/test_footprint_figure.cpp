@@ -141,8 +141,10 @@ TEST(FootprintFiles, CsvIsReadBackAsWrittenAndTheLastFrameIsFound) {
   write_footprint(dir + "/footprint/00009", map, window, tire, "test");
   EXPECT_TRUE(std::filesystem::is_regular_file(dir + "/footprint/00010.png"));
 
-  const auto read = sweep::last_footprint(dir);
-  ASSERT_TRUE(read.has_value());
+  const auto panel = sweep::last_footprint(dir);
+  ASSERT_TRUE(panel.has_value());
+  EXPECT_FALSE(panel->tread_stress);
+  const FootprintField* read = &panel->field;
   EXPECT_EQ(read->nx, written.nx);
   EXPECT_EQ(read->nz, written.nz);
   EXPECT_NEAR(read->x0, written.x0, 1e-9);
@@ -153,6 +155,15 @@ TEST(FootprintFiles, CsvIsReadBackAsWrittenAndTheLastFrameIsFound) {
 
   EXPECT_FALSE(sweep::last_footprint(dir + "/none").has_value());
   EXPECT_FALSE(read_footprint_csv(dir + "/footprint/00010.png").has_value());
+
+  // A rubber tire's run has tread_stress/ instead: found, and marked so.
+  const std::string rubber = dir + "/rubber";
+  std::filesystem::create_directories(rubber + "/tread_stress");
+  std::filesystem::copy_file(dir + "/footprint/00010.csv", rubber + "/tread_stress/00003.csv");
+  const auto stress = sweep::last_footprint(rubber);
+  ASSERT_TRUE(stress.has_value());
+  EXPECT_TRUE(stress->tread_stress);
+  EXPECT_EQ(stress->field.nx, written.nx);
 }
 
 TEST(FootprintComparison, PanelsShareOneColourScaleThreeToARow) {

@@ -13,6 +13,10 @@
 
 namespace firn {
 
+// How its figure names the loaded columns and the empty ones (FootprintFigureSpec patch, empty).
+inline constexpr const char* kTreadStressPatch = "stressed tread";
+inline constexpr const char* kTreadStressEmpty = "no tread below the axle";
+
 // The tread's particles: those of [begin, end) farther than `inner` from the axle through `tire`'s
 // centre (along its z axis) and below it. Each column of the window (x within radius, z within
 // half_z of the axle, columns dx wide) holds the mean von Mises stress of those in it (Pa).

@@ -182,8 +182,8 @@ class SceneMetrics {
     std::snprintf(title, sizeof title, "%s tread, t = %.1f ms, von Mises stress of the tread below the axle",
                   t.tread.c_str(), 1e3 * sim.time());
     spec.title = title;
-    spec.patch = "stressed tread";
-    spec.empty = "no tread below the axle";
+    spec.patch = kTreadStressPatch;
+    spec.empty = kTreadStressEmpty;
     spec.tread = tread_cover(solid);
     return write_map(stem, f, spec);
   }

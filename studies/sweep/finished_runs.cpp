@@ -37,11 +37,10 @@ void FinishedRuns::plot() const {
   }
   std::vector<FootprintPanel> footprints;
   for (const auto& [index, record] : finished_)
-    if (auto field = last_footprint(run_dir(plan_, index))) {
-      std::string label;
+    if (auto panel = last_footprint(run_dir(plan_, index))) {
       for (std::size_t k = 0; k < plan_.keys.size(); ++k)
-        label += (k ? ", " : "") + plan_.keys[k].key + "=" + record.values[k];
-      footprints.push_back({label, std::move(*field)});
+        panel->label += (k ? ", " : "") + plan_.keys[k].key + "=" + record.values[k];
+      footprints.push_back(std::move(*panel));
     }
   if (footprints.empty()) return;
   std::filesystem::create_directories(dir);

@@ -4,19 +4,23 @@
 #include <filesystem>
 
 #include "engine/output/footprint_writer.hpp"
+#include "engine/output/tread_stress.hpp"
 
 namespace firn::sweep {
 
-std::optional<FootprintField> last_footprint(const std::string& run_dir) {
+std::optional<FootprintPanel> last_footprint(const std::string& run_dir) {
   namespace fs = std::filesystem;
-  std::string last;
-  for (const char* folder : {"/footprint", "/tread_stress"}) {  // a run writes one of them
+  for (const char* folder : {"footprint", "tread_stress"}) {  // a run writes one of them
     std::error_code error;
-    for (const auto& entry : fs::directory_iterator(run_dir + folder, error))
+    std::string last;
+    for (const auto& entry : fs::directory_iterator(run_dir + "/" + folder, error))
       if (entry.path().extension() == ".csv") last = std::max(last, entry.path().string());  // NNNNN: by frame
+    if (last.empty()) continue;
+    std::optional<FootprintField> field = read_footprint_csv(last);
+    if (!field) return std::nullopt;
+    return FootprintPanel{"", std::move(*field), std::string(folder) == "tread_stress"};
   }
-  if (last.empty()) return std::nullopt;
-  return read_footprint_csv(last);
+  return std::nullopt;
 }
 
 Image footprint_comparison(const std::vector<FootprintPanel>& panels, int per_row) {
@@ -32,6 +36,7 @@ Image footprint_comparison(const std::vector<FootprintPanel>& panels, int per_ro
     spec.axle_z = p.field.z0 + 0.5 * (p.field.nz - 1) * p.field.dx;
     spec.pressure_max = peak;
     spec.title = p.label;
+    if (p.tread_stress) spec.patch = kTreadStressPatch, spec.empty = kTreadStressEmpty;
     figures.push_back(draw_footprint_figure(p.field, spec));
     w = std::max(w, figures.back().width), h = std::max(h, figures.back().height);
   }

@@ -15,12 +15,13 @@ namespace firn::sweep {
 struct FootprintPanel {
   std::string label;  // e.g. "tire.tread=six_rib"
   FootprintField field;
+  bool tread_stress = false;  // a rubber tire's tread stress, not a footprint's pressure
 };
 
 // The last footprint CSV (the highest frame number) under RUN_DIR/footprint, or a rubber tire's
-// tread stress under RUN_DIR/tread_stress (engine/output/tread_stress.hpp); none when there is none
-// or it cannot be read.
-std::optional<FootprintField> last_footprint(const std::string& run_dir);
+// tread stress under RUN_DIR/tread_stress (engine/output/tread_stress.hpp), unlabelled; none when
+// there is neither or it cannot be read.
+std::optional<FootprintPanel> last_footprint(const std::string& run_dir);
 
 // The panels drawn on the largest peak among them, in rows of up to `per_row`.
 Image footprint_comparison(const std::vector<FootprintPanel>& panels, int per_row = 3);
