@@ -37,7 +37,7 @@ void planar_motion(const ParticleView<T>& pv, double& velocity_x, double& omega_
 }
 
 template <class T, class Backend>
-InclineHistory run_incline_in(const InclineRun& run, const VerificationOptions& options, const Backend& backend) {
+InclineHistory run_incline_in(const InclineRun& run, const Backend& backend) {
   const double dx = run.dx, h = dx / run.per_cell;
   SimulationConfig c;
   c.domain_min = {-3 * dx, -3 * dx, -2 * dx};
@@ -94,7 +94,7 @@ InclineHistory run_incline_in(const InclineRun& run, const VerificationOptions& 
 InclineHistory run_incline(const InclineRun& run, const VerificationOptions& options) {
   return with_precision(run.method, [&](auto scalar) {
     return with_backend(options.backend, options.threads, [&](const auto& backend) {
-      return run_incline_in<decltype(scalar)>(run, options, backend);
+      return run_incline_in<decltype(scalar)>(run, backend);
     });
   });
 }

@@ -46,8 +46,7 @@ struct Manufactured {
 };
 
 template <class T, class Backend>
-VerificationCase run_manufactured(int level, const VerificationMethod& method, const VerificationOptions& options,
-                                  const Backend& backend) {
+VerificationCase run_manufactured(int level, const VerificationMethod& method, const Backend& backend) {
   const Manufactured ms;
   const double end_time = 1 / ms.c;  // half a period of sin(c pi t)
   const int cells = 8 << level, per_cell = 2 + level;
@@ -98,7 +97,7 @@ VerificationCase manufactured_solution_case(int level, const VerificationMethod&
                                             const VerificationOptions& options) {
   return with_precision(method, [&](auto scalar) {
     return with_backend(options.backend, options.threads, [&](const auto& backend) {
-      return run_manufactured<decltype(scalar)>(level, method, options, backend);
+      return run_manufactured<decltype(scalar)>(level, method, backend);
     });
   });
 }

@@ -22,8 +22,8 @@ constexpr double kRadius = 0.2, kSpeed = 0.1, kEndTime = 4.0;
 constexpr int kPerCell = 2;
 
 template <class T, class Backend>
-TwoSpheresCase run_spheres(int level, const VerificationMethod& method, const VerificationOptions& options,
-                           const EnergyHistory& history, const Backend& backend) {
+TwoSpheresCase run_spheres(int level, const VerificationMethod& method, const EnergyHistory& history,
+                           const Backend& backend) {
   const double dx = 1.0 / (16 << level), s = kSpeed / std::sqrt(3.0), h = dx / kPerCell;
   SimulationConfig c;
   c.domain_min = {0, 0, 0};
@@ -68,7 +68,7 @@ TwoSpheresCase two_spheres_case(int level, const VerificationMethod& method, con
                                 const EnergyHistory& history) {
   return with_precision(method, [&](auto scalar) {
     return with_backend(options.backend, options.threads, [&](const auto& backend) {
-      return run_spheres<decltype(scalar)>(level, method, options, history, backend);
+      return run_spheres<decltype(scalar)>(level, method, history, backend);
     });
   });
 }

@@ -25,8 +25,7 @@ constexpr double kFinestBound = 0.01;  // 1% of the amplitude at level 2
 constexpr int kPerCell = 2;
 
 template <class T, class Backend>
-VerificationCase run_bar(int level, const VerificationMethod& method, const VerificationOptions& options,
-                         const Backend& backend) {
+VerificationCase run_bar(int level, const VerificationMethod& method, const Backend& backend) {
   const double beta = M_PI / (2 * kL), w = beta * std::sqrt(kE / kRho), amplitude = kV0 / w, period = 2 * M_PI / w;
   const double dx = kL / (50 << level);
   SimulationConfig c;
@@ -70,7 +69,7 @@ VerificationCase run_bar(int level, const VerificationMethod& method, const Veri
 VerificationCase vibrating_bar_case(int level, const VerificationMethod& method, const VerificationOptions& options) {
   return with_precision(method, [&](auto scalar) {
     return with_backend(options.backend, options.threads, [&](const auto& backend) {
-      return run_bar<decltype(scalar)>(level, method, options, backend);
+      return run_bar<decltype(scalar)>(level, method, backend);
     });
   });
 }
