@@ -56,10 +56,12 @@ struct BlockScratch {
     set_origin(block);
     for (int i = 0; i < kNodes * kChannels; ++i) values[i] = T(0);
   }
-  // The scatter target of p2g_particle.
-  FIRN_HD void add(int i, int j, int k, const T* v) {
+  // The scatter target of p2g_particle: nodes (i, j, k .. k + kRow - 1) are consecutive here.
+  template <int kRow>
+  FIRN_HD void add_row(int i, int j, int k, const T* v) {
     T* node = values + (((i - origin[0]) * kSpan + (j - origin[1])) * kSpan + (k - origin[2])) * kChannels;
-    for (int c = 0; c < kChannels; ++c) node[c] += v[c];
+    FIRN_LANES
+    for (int c = 0; c < kRow * kChannels; ++c) node[c] += v[c];
   }
   // Adds local node n into the grid. Only one block of a parity colour touches these nodes.
   FIRN_HD void flush_node(const SparseGridView<T>& grid, int n) const {
@@ -98,8 +100,8 @@ struct BlockGather {
     set_origin(block);
     for (int n = 0; n < kNodes; ++n) load_node(grid, first, n);
   }
-  // The grid source of g2p_particle.
-  FIRN_HD const T* node(int i, int j, int k) const {
+  // The grid source of g2p_particle: nodes (i, j, k ..) are consecutive here.
+  FIRN_HD const T* row(int i, int j, int k) const {
     return values + (((i - origin[0]) * kSpan + (j - origin[1])) * kSpan + (k - origin[2])) * kChannels;
   }
 };

@@ -2,8 +2,9 @@
 //   v_pic = sum w_ip v_i,  C = D^-1 sum w_ip v_i (x_i - x_p)^T   (Jiang et al. 2015, Eq. 8; MLS)
 //   F <- (I + dt C) F,     x <- x + dt v_pic                     (Hu et al. 2018, Eq. 17)
 //   v_p = v_pic (APIC, PIC) or alpha (v_p + v_pic - v_old) + (1 - alpha) v_pic (FLIP),
-// where v_old = sum w_ip v_i_old. Reads grid velocities from Source::node(i, j, k), which returns
-// GridChannels::kGatherCount values: velocity and a zero pad, then for FLIP the old velocity and a pad.
+// where v_old = sum w_ip v_i_old. Reads grid velocities from Source::row(i, j, k): the nodes
+// (i, j, k .. k + S - 1) one after another, GridChannels::kGatherCount values each (velocity and a
+// zero pad, then for FLIP the old velocity and a pad).
 // Returns what the stability guard needs: the new speed, J = det F and the distance moved.
 #pragma once
 
@@ -35,32 +36,44 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
   const T* f = st.f;
   const auto& w = st.w;
 
-  // Accumulate sum w v_i and its first moments sum w v_i o_k (o the node offset), four lanes per
-  // node (velocity and a zero pad) so that every update is one short vector operation; the sums
-  // over the innermost axis are taken first. FLIP also accumulates v_old = sum w v_i_old.
-  T vp[4] = {T(0), T(0), T(0), T(0)}, mo[3][4] = {}, vold[4] = {T(0), T(0), T(0), T(0)};
-  for (int a = 0; a < S; ++a)
+  // Accumulate sum w v_i and its first moments sum w v_i o_k (o the node offset). A row of the
+  // stencil (fixed a, b; c = 0 .. S-1) is S consecutive nodes of K values (velocity and a zero pad,
+  // then for FLIP the old velocity and a pad), read as one short vector of lanes l = c K + r and
+  // weighted along z per lane (Wz). Sums over b first (weights w_b and b w_b), then over a; the
+  // lanes are folded over c at the end, where the z moment takes its factor c.
+  constexpr int K = GridChannels<kTransfer>::kGatherCount, L = S * K;
+  T Wz[L];
+  for (int c = 0; c < S; ++c)
+    for (int r = 0; r < K; ++r) Wz[c * K + r] = w[2][c];
+  T s0[L] = {}, sa[L] = {}, sb[L] = {};
+  for (int a = 0; a < S; ++a) {
+    T t0[L] = {}, tb[L] = {};
     for (int b = 0; b < S; ++b) {
-      T sv[4] = {T(0), T(0), T(0), T(0)}, sc[4] = {T(0), T(0), T(0), T(0)}, so[4] = {T(0), T(0), T(0), T(0)};
-      for (int c = 0; c < S; ++c) {
-        const T* node = grid.node(base[0] + a, base[1] + b, base[2] + c);
-        const T wc = w[2][c], wcc = w[2][c] * T(c);
-        for (int r = 0; r < 4; ++r) {
-          sv[r] += wc * node[r];
-          sc[r] += wcc * node[r];
-        }
-        if (kTransfer == Transfer::flip)
-          for (int r = 0; r < 4; ++r) so[r] += wc * node[4 + r];
+      const T* row = grid.row(base[0] + a, base[1] + b, base[2]);
+      const T wb = w[1][b], wbb = w[1][b] * T(b);
+      FIRN_LANES
+      for (int l = 0; l < L; ++l) {
+        t0[l] += wb * row[l];
+        tb[l] += wbb * row[l];
       }
-      const T wab = w[0][a] * w[1][b], wa = wab * T(a), wb = wab * T(b);
-      for (int r = 0; r < 4; ++r) {
-        vp[r] += wab * sv[r];
-        mo[0][r] += wa * sv[r];
-        mo[1][r] += wb * sv[r];
-        mo[2][r] += wab * sc[r];
-      }
-      if (kTransfer == Transfer::flip)
-        for (int r = 0; r < 4; ++r) vold[r] += wab * so[r];
+    }
+    const T wa = w[0][a], waa = w[0][a] * T(a);
+    FIRN_LANES
+    for (int l = 0; l < L; ++l) {
+      s0[l] += wa * t0[l];
+      sa[l] += waa * t0[l];
+      sb[l] += wa * tb[l];
+    }
+  }
+  T vp[4] = {T(0), T(0), T(0), T(0)}, mo[3][4] = {}, vold[4] = {T(0), T(0), T(0), T(0)};
+  for (int c = 0; c < S; ++c)
+    for (int r = 0; r < 4; ++r) {
+      const int l = c * K + r;
+      vp[r] += Wz[l] * s0[l];
+      mo[0][r] += Wz[l] * sa[l];
+      mo[1][r] += Wz[l] * sb[l];
+      mo[2][r] += (Wz[l] * T(c)) * s0[l];
+      if constexpr (kTransfer == Transfer::flip) vold[r] += Wz[l + 4] * s0[l + 4];
     }
   T Bo[9];
   for (int r = 0; r < 3; ++r)

@@ -16,3 +16,12 @@
 #else
 #define FIRN_HD_LAMBDA
 #endif
+
+// Marks a loop over a kernel's short vector of lanes (a stencil row's nodes x channels): the CPU
+// compiler vectorises it as one loop rather than unrolling it into scalar code first (OpenMP's
+// `simd`, which needs no threads); nothing in device code, where a thread is one lane.
+#if defined(__CUDA_ARCH__) || !defined(_OPENMP)
+#define FIRN_LANES
+#else
+#define FIRN_LANES _Pragma("omp simd")
+#endif

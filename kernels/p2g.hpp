@@ -4,8 +4,10 @@
 //   mv_i += w_ip (m_p v_p + A_p (x_i - x_p)),  A_p = m_p C_p - dt V0_p D^-1 tau_p
 // with tau the Kirchhoff stress (V0 tau = V P F^T). PIC and FLIP drop the m_p C_p term; FLIP also
 // scatters the momentum without the stress impulse, from which the grid update recovers the old
-// grid velocity. An optional body acceleration b adds m b dt to the momentum. The kernel computes contributions; where they go is the scatter target's business
-// (a block-local scratch on the CPU, atomics on a GPU): Target::add(i, j, k, values[kCount]).
+// grid velocity. An optional body acceleration b adds m b dt to the momentum. The kernel computes
+// contributions; where they go is the scatter target's business (a block-local scratch on the CPU,
+// shared memory on a GPU): Target::add_row<S>(i, j, k, values[S kCount]) adds nodes
+// (i, j, k .. k + S - 1), kCount values each.
 #pragma once
 
 #include <cstddef>
@@ -41,8 +43,12 @@ FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGe
     for (int q = 0; q < 9; ++q) A[q] += m * pv.C[q][p];
 
   // With node offset o = (a, b, c) from base, x_i - x_p = (o - f) dx, so the node receives
-  // w (m, q + Ad o) with Ad = A dx and q = m vb - Ad f. Four lanes (mass, momentum) per node:
-  // u = (m, q) + a col0 + b col1 + c col2, with col_k = (0, Ad column k).
+  // w (m, q + Ad o) with Ad = A dx and q = m vb - Ad f: (m, q) + a col0 + b col1 + c col2, with
+  // col_k = (0, Ad column k). A row of the stencil (fixed a, b; c = 0 .. S-1) is S consecutive
+  // nodes, so its S x kCount values are computed and added as one short vector (lane l = c kCount
+  // + r, 12 lanes for quadratic APIC): val = (w_a w_b Wz) (P + a L0 + b L1), where Wz, P, L0 and L1
+  // are the per-lane weight along z, (m, q) + c col2, col0 and col1 (FLIP's lanes 4-7 hold the
+  // momentum without the impulse, m v, in P only).
   T Ad[9];
   for (int q = 0; q < 9; ++q) Ad[q] = A[q] * g.dx;
   T u0[4] = {m, T(0), T(0), T(0)}, col[3][4];
@@ -52,23 +58,28 @@ FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGe
     col[k][0] = T(0);
     for (int r = 0; r < 3; ++r) col[k][1 + r] = Ad[3 * r + k];
   }
-  const T mv[4] = {T(0), m * v[0], m * v[1], m * v[2]};  // FLIP: momentum without the impulse
-
+  constexpr int K = Ch::kCount, L = S * K;
+  const T mv[4] = {T(0), m * v[0], m * v[1], m * v[2]};
+  T Wz[L], P[L], L0[L], L1[L];
+  for (int c = 0; c < S; ++c)
+    for (int r = 0; r < K; ++r) {
+      const int l = c * K + r;
+      Wz[l] = w[2][c];
+      const bool impulse = r < 4;  // FLIP's lanes 4-7: pad and m v
+      P[l] = impulse ? u0[r] + T(c) * col[2][r] : mv[r & 3];
+      L0[l] = impulse ? col[0][r] : T(0);
+      L1[l] = impulse ? col[1][r] : T(0);
+    }
   for (int a = 0; a < S; ++a) {
-    T ua[4];
-    for (int r = 0; r < 4; ++r) ua[r] = u0[r] + T(a) * col[0][r];
+    T Pa[L];
+    FIRN_LANES
+    for (int l = 0; l < L; ++l) Pa[l] = P[l] + T(a) * L0[l];
     for (int b = 0; b < S; ++b) {
-      T uab[4];
-      for (int r = 0; r < 4; ++r) uab[r] = ua[r] + T(b) * col[1][r];
       const T wab = w[0][a] * w[1][b];
-      for (int c = 0; c < S; ++c) {
-        const T wt = wab * w[2][c];
-        T val[Ch::kCount];
-        for (int r = 0; r < 4; ++r) val[r] = wt * (uab[r] + T(c) * col[2][r]);
-        if (kTransfer == Transfer::flip)
-          for (int r = 0; r < 4; ++r) val[4 + r] = wt * mv[r];
-        out.add(base[0] + a, base[1] + b, base[2] + c, val);
-      }
+      T val[L];
+      FIRN_LANES
+      for (int l = 0; l < L; ++l) val[l] = (wab * Wz[l]) * (Pa[l] + T(b) * L1[l]);
+      out.template add_row<S>(base[0] + a, base[1] + b, base[2], val);
     }
   }
 }

@@ -41,8 +41,10 @@ void one_particle(ParticleStorage<double>& s) {
 
 struct Totals {  // a scatter target that sums everything it receives
   double sums[7] = {0, 0, 0, 0, 0, 0, 0};
-  void add(int, int, int, const double* v) {
-    for (int c = 0; c < 4; ++c) sums[c] += v[c];
+  template <int kRow>
+  void add_row(int, int, int, const double* v) {
+    for (int n = 0; n < kRow; ++n)
+      for (int c = 0; c < 4; ++c) sums[c] += v[4 * n + c];
   }
 };
 
@@ -64,13 +66,14 @@ struct AffineField {  // v(x) = a + B x at every node (and old velocity = 0)
   GridGeometry<double> g;
   double a[3] = {0.5, -0.25, 1.0};
   double B[9] = {0.1, -0.2, 0.3, 0.05, 0.4, -0.1, -0.3, 0.2, 0.15};
-  mutable double node_value[8] = {0, 0, 0, 0, 0, 0, 0, 0};  // velocity, pad, old velocity, pad
-  const double* node(int i, int j, int k) const {
-    const double x[3] = {i * g.dx, j * g.dx, k * g.dx};
-    for (int r = 0; r < 3; ++r) {
-      node_value[r] = a[r] + B[3 * r] * x[0] + B[3 * r + 1] * x[1] + B[3 * r + 2] * x[2];
+  mutable double row_values[4 * 4] = {};  // up to 4 nodes (cubic) of velocity and a pad (APIC)
+  const double* row(int i, int j, int k) const {
+    for (int n = 0; n < 4; ++n) {
+      const double x[3] = {i * g.dx, j * g.dx, (k + n) * g.dx};
+      for (int r = 0; r < 3; ++r)
+        row_values[4 * n + r] = a[r] + B[3 * r] * x[0] + B[3 * r + 1] * x[1] + B[3 * r + 2] * x[2];
     }
-    return node_value;
+    return row_values;
   }
 };
 
@@ -97,8 +100,8 @@ TEST(G2P, ReproducesAffineFieldCubic) { check_g2p_affine<CubicBSpline<double>>()
 TEST(G2P, FlipBlend) {
   // Grid velocity uniform u, old grid velocity 0: FLIP gives alpha (v_p + u) + (1 - alpha) u.
   struct Uniform {
-    double value[8] = {1, 2, 3, 0, 0, 0, 0, 0};
-    const double* node(int, int, int) const { return value; }
+    double value[3 * 8] = {1, 2, 3, 0, 0, 0, 0, 0, 1, 2, 3, 0, 0, 0, 0, 0, 1, 2, 3, 0, 0, 0, 0, 0};
+    const double* row(int, int, int) const { return value; }
   } grid;
   ParticleStorage<double> s;
   one_particle(s);

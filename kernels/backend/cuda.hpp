@@ -96,14 +96,15 @@ struct StagedParticle {
   int count;
   T values[kSupport * kSupport * kSupport * kChannels];
 
-  FIRN_HD void add(int i, int j, int k, const T* v) {
+  template <int kRow>
+  FIRN_HD void add_row(int i, int j, int k, const T* v) {
     if (count == 0) {
       base[0] = i;
       base[1] = j;
       base[2] = k;
     }
-    for (int c = 0; c < kChannels; ++c) values[count * kChannels + c] = v[c];
-    ++count;
+    for (int c = 0; c < kRow * kChannels; ++c) values[count * kChannels + c] = v[c];
+    count += kRow;
   }
   // The contribution to global node g, or null when g is outside the stencil.
   FIRN_HD const T* at(const int g[3]) const {

@@ -47,12 +47,18 @@ struct ContactNormalScatter {
     const Stencil<T, ShapeT> st = particle_stencil<T, ShapeT>(pv, p, g);
     const T sign = group_b.holds(p) ? T(-1) : T(1);  // grad m_A - grad m_B
     for (int a = 0; a < kSupport; ++a)
-      for (int b = 0; b < kSupport; ++b)
+      for (int b = 0; b < kSupport; ++b) {
+        T v[kSupport * kChannels];
         for (int c = 0; c < kSupport; ++c) {
           const T w = st.w[0][a] * st.w[1][b] * st.w[2][c], smw = sign * pv.mass[p] * w;
-          const T v[kChannels] = {smw * (st.f[0] - T(a)), smw * (st.f[1] - T(b)), smw * (st.f[2] - T(c)), w * pv.vol0[p]};
-          out.add(st.base[0] + a, st.base[1] + b, st.base[2] + c, v);
+          T* node = v + c * kChannels;
+          node[0] = smw * (st.f[0] - T(a));
+          node[1] = smw * (st.f[1] - T(b));
+          node[2] = smw * (st.f[2] - T(c));
+          node[3] = w * pv.vol0[p];
         }
+        out.template add_row<kSupport>(st.base[0] + a, st.base[1] + b, st.base[2], v);
+      }
   }
 
   FIRN_HD void operator()(std::uint32_t b) const { scatter_block(*this, b); }

@@ -54,12 +54,15 @@ struct VolumeScatter {
     const T m = averaged.holds(p) ? pv.mass[p] : T(0);
     const T mJ = m * determinant(particle_F(pv, p));
     for (int a = 0; a < kSupport; ++a)
-      for (int b = 0; b < kSupport; ++b)
+      for (int b = 0; b < kSupport; ++b) {
+        T v[kSupport * kChannels];
         for (int c = 0; c < kSupport; ++c) {
           const T w = st.w[0][a] * st.w[1][b] * st.w[2][c];
-          const T v[kChannels] = {w * m, w * mJ};
-          out.add(st.base[0] + a, st.base[1] + b, st.base[2] + c, v);
+          v[c * kChannels] = w * m;
+          v[c * kChannels + 1] = w * mJ;
         }
+        out.template add_row<kSupport>(st.base[0] + a, st.base[1] + b, st.base[2], v);
+      }
   }
 
   FIRN_HD void operator()(std::uint32_t b) const {
@@ -96,11 +99,13 @@ struct VolumeGather {
     const Stencil<T, ShapeT> st = particle_stencil<T, ShapeT>(pv, p, g);
     T J_bar = T(0);
     for (int a = 0; a < S; ++a)
-      for (int b = 0; b < S; ++b)
+      for (int b = 0; b < S; ++b) {
+        const T* row = window.row(st.base[0] + a, st.base[1] + b, st.base[2]);
         for (int c = 0; c < S; ++c) {
-          const T* node = window.node(st.base[0] + a, st.base[1] + b, st.base[2] + c);
+          const T* node = row + c * 2;  // m, m J
           if (node[0] > T(0)) J_bar += st.w[0][a] * st.w[1][b] * st.w[2][c] * node[1] / node[0];
         }
+      }
     const T J = determinant(particle_F(pv, p));
     if (!(J > T(0)) || !(J_bar > T(0))) return;  // an inverted particle is the guard's to report
     const T scale = std::cbrt(J_bar / J);
