@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <variant>
@@ -51,6 +52,24 @@ inline double material_param(const MaterialInfo& info, const std::string& key) {
     for (const MaterialParameter& p : spec->parameters)
       if (p.key == key && p.default_value) return *p.default_value;
   return info.param(key);  // throws, naming the key
+}
+
+// The MaterialInfo of a catalog preset (material_catalog.cpp) as it stands, with `overrides` put
+// over its values; the moduli from any two of E, nu, K and G. Throws for an unknown preset.
+inline MaterialInfo preset_material_info(const std::string& name, std::map<std::string, double> overrides = {}) {
+  const MaterialPreset* preset = find_material_preset(name);
+  if (!preset) throw std::invalid_argument("no material preset '" + name + "'");
+  std::map<std::string, double> v = preset->values;
+  for (const auto& [k, x] : overrides) v[k] = x;
+  const auto get = [&](const char* key) -> std::optional<double> {
+    const auto it = v.find(key);
+    return it == v.end() ? std::nullopt : std::optional<double>(it->second);
+  };
+  MaterialInfo info{
+      name, preset->model, v.at("density"), ElasticModuli::from_any_two(get("E"), get("nu"), get("K"), get("G")), {}};
+  for (const auto& [k, x] : v)
+    if (k != "density" && k != "E" && k != "nu" && k != "K" && k != "G") info.params[k] = x;
+  return info;
 }
 
 // Nearly incompressible hyperelastic solids (rubber) get the F-bar volume averaging of

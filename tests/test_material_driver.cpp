@@ -5,25 +5,11 @@
 
 #include <cmath>
 
-#include "engine/material_catalog.hpp"
+#include "engine/materials.hpp"
 #include "engine/verification/material_driver.hpp"
 
 namespace firn {
 namespace {
-
-MaterialInfo info_of(const std::string& preset_name) {
-  const MaterialPreset* p = find_material_preset(preset_name);
-  EXPECT_NE(p, nullptr) << preset_name;
-  const auto& v = p->values;
-  const auto get = [&](const char* k) -> std::optional<double> {
-    return v.count(k) ? std::optional<double>(v.at(k)) : std::nullopt;
-  };
-  MaterialInfo info{
-      preset_name, p->model, v.at("density"), ElasticModuli::from_any_two(get("E"), get("nu"), get("K"), get("G")), {}};
-  for (const auto& [k, x] : v)
-    if (k != "density" && k != "E" && k != "nu" && k != "K" && k != "G") info.params[k] = x;
-  return info;
-}
 
 TEST(MaterialCatalog, ThesisPresetsMatchTables) {
   // Table 4.2 (MPa, g/cm^3 there) and 4.3: hard snow = shell, soft snow = core.
@@ -34,7 +20,7 @@ TEST(MaterialCatalog, ThesisPresetsMatchTables) {
   for (const Row& r : {Row{"thesis_shell", 400, 78e3, 58.3e3, 15}, Row{"thesis_middle", 360, 51e3, 32.5e3, 12},
                        Row{"thesis_core", 330, 26.7e3, 20e3, 10}, Row{"thesis_hard_snow", 400, 78e3, 58.3e3, 15},
                        Row{"thesis_soft_snow", 330, 26.7e3, 20e3, 10}}) {
-    const MaterialInfo info = info_of(r.name);
+    const MaterialInfo info = preset_material_info(r.name);
     EXPECT_EQ(info.model, "hyperelastic_plastic");
     EXPECT_DOUBLE_EQ(info.density, r.rho);
     EXPECT_DOUBLE_EQ(info.moduli.K, r.K);
@@ -47,7 +33,7 @@ TEST(MaterialCatalog, ThesisPresetsMatchTables) {
     EXPECT_EQ(hp.hardening.law, HardeningLaw::nonlinear);
     EXPECT_DOUBLE_EQ(hp.elastic.G2, 0);  // default
   }
-  const MaterialInfo snow = info_of("thesis_stomakhin_snow");
+  const MaterialInfo snow = preset_material_info("thesis_stomakhin_snow");
   const MaterialModel<double> snow_model = make_material_model<double>(snow);
   const auto& sm = std::get<SnowStomakhin<double>>(snow_model);
   EXPECT_DOUBLE_EQ(snow.moduli.E, 1.4e5);
@@ -55,7 +41,7 @@ TEST(MaterialCatalog, ThesisPresetsMatchTables) {
   EXPECT_DOUBLE_EQ(sm.theta_c, 2.5e-2);
   EXPECT_DOUBLE_EQ(sm.theta_s, 7.5e-3);
   EXPECT_TRUE(std::isinf(sm.Jp_max));
-  const MaterialInfo rubber = info_of("thesis_tire_rubber");
+  const MaterialInfo rubber = preset_material_info("thesis_tire_rubber");
   EXPECT_DOUBLE_EQ(rubber.moduli.nu, 0.49);
   EXPECT_DOUBLE_EQ(rubber.density, 930);
   EXPECT_TRUE(std::holds_alternative<MooneyRivlin<double>>(make_material_model<double>(rubber)));
@@ -74,14 +60,14 @@ TEST(MaterialCatalog, EveryParameterDefaultIsInRange) {
 }
 
 TEST(MaterialFactory, RejectsG2NotBelowG) {
-  MaterialInfo info = info_of("thesis_tire_rubber");
+  MaterialInfo info = preset_material_info("thesis_tire_rubber");
   info.params["G2"] = info.moduli.G;
   EXPECT_THROW(make_material_model<double>(info), std::invalid_argument);
 }
 
 TEST(MaterialDriver, ElasticPathComposesIncrementsExactly) {
   // For an elastic model the increments must compose to F(t): tau equals kirchhoff(F(t)).
-  const MaterialModel<double> model = make_material_model<double>(info_of("thesis_tire_rubber"));
+  const MaterialModel<double> model = make_material_model<double>(preset_material_info("thesis_tire_rubber"));
   const auto& mr = std::get<MooneyRivlin<double>>(model);
   const DriverHistory h =
       drive_material(model, paths::rotated(paths::compress_and_shear(0.6, 1.5), {{0, 1, 1}}, 2.0), 50);
@@ -95,7 +81,7 @@ TEST(MaterialDriver, ElasticPathComposesIncrementsExactly) {
 }
 
 TEST(MaterialDriver, HydrostaticCycleReturnsToIdentity) {
-  const MaterialModel<double> model = make_material_model<double>(info_of("thesis_core"));
+  const MaterialModel<double> model = make_material_model<double>(preset_material_info("thesis_core"));
   const DriverHistory h = drive_material(model, paths::hydrostatic_cycle(0.3), 100);
   EXPECT_NEAR(determinant(h.F[50]), 0.3, 1e-12);
   for (int q = 0; q < 9; ++q) EXPECT_NEAR(h.F_E.back().m[q], q % 4 == 0 ? 1 : 0, 1e-12);
@@ -103,7 +89,7 @@ TEST(MaterialDriver, HydrostaticCycleReturnsToIdentity) {
 }
 
 TEST(MaterialDriver, UniaxialStressHasNoLateralStress) {
-  const MaterialModel<double> model = make_material_model<double>(info_of("thesis_shell"));
+  const MaterialModel<double> model = make_material_model<double>(preset_material_info("thesis_shell"));
   const DriverHistory h = drive_uniaxial_stress(model, -0.1, 50);  // well into the plastic range
   EXPECT_GT(h.state.back().alpha, 0);
   for (const auto& tau : h.tau) {
@@ -116,7 +102,7 @@ TEST(MaterialDriver, UniaxialStressHasNoLateralStress) {
 }
 
 TEST(MaterialDriver, CyclicLoadingAccumulatesPlasticStrain) {
-  const MaterialModel<double> model = make_material_model<double>(info_of("thesis_shell"));
+  const MaterialModel<double> model = make_material_model<double>(preset_material_info("thesis_shell"));
   const DriverHistory h = drive_material(model, paths::cyclic_uniaxial_strain(0.02, 2), 200);
   for (std::size_t k = 1; k < h.state.size(); ++k) EXPECT_GE(h.state[k].alpha, h.state[k - 1].alpha);
   EXPECT_GT(h.state[100].alpha, h.state[50].alpha);  // the second half-cycle yields again

@@ -10,28 +10,12 @@
 #include <functional>
 #include <stdexcept>
 
-#include "engine/material_catalog.hpp"
+#include "engine/materials.hpp"
 #include "engine/verification/verification.hpp"
 #include "kernels/svd3.hpp"
 
 namespace firn {
 namespace {
-
-MaterialInfo preset_material(const std::string& name, std::map<std::string, double> overrides = {}) {
-  const MaterialPreset* preset = find_material_preset(name);
-  if (!preset) throw std::logic_error("no material preset '" + name + "'");
-  std::map<std::string, double> v = preset->values;
-  for (const auto& [k, x] : overrides) v[k] = x;
-  const auto get = [&](const char* key) -> std::optional<double> {
-    const auto it = v.find(key);
-    return it == v.end() ? std::nullopt : std::optional<double>(it->second);
-  };
-  MaterialInfo info{
-      name, preset->model, v.at("density"), ElasticModuli::from_any_two(get("E"), get("nu"), get("K"), get("G")), {}};
-  for (const auto& [k, x] : v)
-    if (k != "density" && k != "E" && k != "nu" && k != "K" && k != "G") info.params[k] = x;
-  return info;
-}
 
 double max_abs(const Mat3<double>& a) {
   double m = 0;
@@ -99,7 +83,7 @@ double substep_error(const MaterialModel<double>& model, const DeformationPath& 
 
 std::vector<VerificationRow> verify_hyperelastic_plastic() {
   Rows r{"material_driver_hyperelastic_plastic", {}};
-  const MaterialInfo shell = preset_material("thesis_shell");
+  const MaterialInfo shell = preset_material_info("thesis_shell");
   const MaterialModel<double> model = make_material_model<double>(shell);
   const HyperelasticPlastic<double>& hp = std::get<HyperelasticPlastic<double>>(model);
   const double K = shell.moduli.K, G = shell.moduli.G;
@@ -126,7 +110,7 @@ std::vector<VerificationRow> verify_hyperelastic_plastic() {
   // eps_end = 3 eps_y, eps_y = sigma_y0 / (2G).
   const double E_p = 0.1 * G, sigma_y0 = 100, eps_y = sigma_y0 / (2 * G), eps_end = 3 * eps_y;
   const MaterialModel<double> linear =
-      make_material_model<double>(preset_material("thesis_shell", {{"hardening", 0}, {"E_p", E_p}}));
+      make_material_model<double>(preset_material_info("thesis_shell", {{"hardening", 0}, {"E_p", E_p}}));
   r.add("linear_hardening_uniaxial_strain", 60, 6 * eps_end, [&] {
     const DriverHistory h = drive_material(linear, paths::uniaxial_strain(eps_end), 60);
     const double alpha_end = (2 * G * eps_end - sigma_y0) / (3 * G + E_p);
@@ -167,7 +151,7 @@ std::vector<VerificationRow> verify_hyperelastic_plastic() {
 
 std::vector<VerificationRow> verify_snow_stomakhin() {
   Rows r{"material_driver_snow_stomakhin", {}};
-  const MaterialInfo snow = preset_material("thesis_stomakhin_snow");
+  const MaterialInfo snow = preset_material_info("thesis_stomakhin_snow");
   const MaterialModel<double> model = make_material_model<double>(snow);
   const SnowStomakhin<double>& sm = std::get<SnowStomakhin<double>>(model);
 
@@ -229,7 +213,7 @@ double von_mises(const Mat3<double>& tau) { return std::sqrt(1.5) * dev_norm(tau
 
 std::vector<VerificationRow> verify_snow_cam_clay() {
   Rows r{"material_driver_snow_cam_clay", {}};
-  const MaterialInfo snow = preset_material("fresh_snow");
+  const MaterialInfo snow = preset_material_info("fresh_snow");
   const MaterialModel<double> model = make_material_model<double>(snow);
   const SnowCamClay<double>& cc = std::get<SnowCamClay<double>>(model);
   const double K = cc.elastic.K, p_c0 = cc.hardening.p_c0, rho0 = cc.hardening.rho0, rho_h = cc.hardening.rho_h;
@@ -301,7 +285,7 @@ std::vector<VerificationRow> verify_snow_cam_clay() {
   r.add("confined_compression_axial_ratio", 3 * 2000, 1e-2, [&] {
     double e = 0;
     for (const char* name : {"fresh_snow", "soft_cam_clay_snow", "packed_snow"}) {
-      const MaterialModel<double> preset = make_material_model<double>(preset_material(name));
+      const MaterialModel<double> preset = make_material_model<double>(preset_material_info(name));
       const SnowCamClay<double>& m = std::get<SnowCamClay<double>>(preset);
       const double slope = 2 * m.elastic.G1 / m.elastic.K;
       const double a = (1 + m.beta) / 2, c = (1 - m.beta) / 2, b = m.M * a / std::sqrt(1 + 2 * m.beta);
@@ -326,8 +310,8 @@ std::vector<VerificationRow> verify_snow_cam_clay() {
 std::vector<VerificationRow> verify_mooney_rivlin() {
   Rows r{"material_driver_mooney_rivlin", {}};
   // Thesis tire rubber with a third of the shear modulus in the G2 term, so that both terms are tested.
-  const MaterialInfo rubber_info = preset_material("thesis_tire_rubber");
-  const MaterialInfo rubber = preset_material("thesis_tire_rubber", {{"G2", rubber_info.moduli.G / 3}});
+  const MaterialInfo rubber_info = preset_material_info("thesis_tire_rubber");
+  const MaterialInfo rubber = preset_material_info("thesis_tire_rubber", {{"G2", rubber_info.moduli.G / 3}});
   const MaterialModel<double> model = make_material_model<double>(rubber);
   const MooneyRivlin<double>& mr = std::get<MooneyRivlin<double>>(model);
 
