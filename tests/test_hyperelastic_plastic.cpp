@@ -8,6 +8,7 @@
 
 #include "kernels/constitutive/hyperelastic_plastic.hpp"
 #include "kernels/constitutive/mooney_rivlin.hpp"
+#include "kernels/svd3.hpp"
 #include "tests/constitutive_checks.hpp"
 
 namespace firn {

@@ -1,14 +1,25 @@
 // The elastic deformation gradient after a return mapping that scales the deviator of the
 // isochoric elastic left Cauchy-Green tensor and sets the elastic volume (DESIGN.md section 4):
-// given the trial F_tr = U diag(sigma_tr) V^T (svd3), bbar_tr = J_tr^(-2/3) b_tr with mean
-// Ibar = tr(bbar_tr) / 3 and principal deviations d_i = J_tr^(-2/3) sigma_tr_i^2 - Ibar, it returns
-// F = U diag(sigma) V^T with
-//   dev(bbar) = keep dev(bbar_tr)   and   det F = J_new.
+// given the trial F_tr with b_tr = F_tr F_tr^T, J_tr = det F_tr, bbar_tr = J_tr^(-2/3) b_tr = Ibar I + D
+// (Ibar = tr(bbar_tr) / 3, D = dev(bbar_tr)), it returns F with
+//   dev(bbar) = keep D   and   det F = J_new.
 // Only J and dev(bbar) enter the stress of an isochoric-volumetric split energy, so the trace part
-// of bbar is free: it is the x with det(x I + keep dev(bbar_tr)) = 1 (the volume-preserving variant
-// of Simo and Hughes, Computational Inelasticity, Box 9.1 step 4; cf. Simo 1992, CMAME 99:61-112),
-// and sigma_i = J_new^(1/3) sqrt(x + keep d_i). Used by the J2 radial return (keep = 1 - beta,
-// J_new = J_tr) and the Cam-clay return (keep = q / q_tr, J_new from the returned pressure).
+// of bbar is free: it is the x with det(x I + keep D) = 1 (the volume-preserving variant of Simo and
+// Hughes, Computational Inelasticity, Box 9.1 step 4; cf. Simo 1992, CMAME 99:61-112). Used by the
+// J2 radial return (keep = 1 - beta, J_new = J_tr) and the Cam-clay return (keep = q / q_tr, J_new
+// from the returned pressure).
+//
+// No SVD: b and bbar = x I + keep D are coaxial, so F = S F_tr with the symmetric stretch
+//   S = (J_new / J_tr)^(1/3) sqrt(A),   A = (x I + keep D) (Ibar I + D)^-1,
+// which keeps F_tr's rotation (S is symmetric positive definite and commutes with b_tr, so
+// F F^T = S^2 b_tr = J_new^(2/3) bbar). The square root of the symmetric positive definite A comes
+// from Hoger and Carlson (1984, Quart. Appl. Math. 42:113-117, Eq. 3.3):
+//   sqrt(A) = (i1 i2 - i3)^-1 (-A^2 + (i1^2 - i2) A + i1 i3 I),
+// with i1, i2, i3 the invariants of sqrt(A), i.e. the elementary symmetric functions of the square
+// roots of A's eigenvalues (closed form for a symmetric 3x3: Smith 1961, Comm. ACM 4:168). The
+// invariants are symmetric in the eigenvalues and i1 i2 - i3 = (l1 + l2)(l2 + l3)(l3 + l1) > 0,
+// so nothing divides by a gap between eigenvalues: repeated eigenvalues, the common case near an
+// isotropic state, are as accurate as distinct ones.
 #pragma once
 
 #include <cmath>
@@ -16,32 +27,73 @@
 #include "kernels/float_limits.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/mat3.hpp"
-#include "kernels/svd3.hpp"
 
 namespace firn {
 
+// The eigenvalues of a symmetric 3x3 matrix (Smith 1961): A = m I + K, tr K = 0, the eigenvalues
+// m + 2 sqrt(p) cos(phi + 2 pi k / 3) with p = K:K / 6 and cos(3 phi) = det(K) / (2 p^(3/2)).
 template <class T>
-FIRN_HD Mat3<T> rescale_isochoric_deviator(const Mat3<T>& U, const Vec3<T>& sigma_tr, const Mat3<T>& V, T Jm23,
-                                           T Ibar, T keep, T J_new) {
-  // h(x) = prod(x + c_i) - 1 is increasing and convex where all factors are positive, and
-  // h(Ibar) >= 0 for keep <= 1 (for fixed trace the product grows as the deviation shrinks), so
-  // Newton from x = Ibar decreases monotonically to the root without leaving that region.
-  Vec3<T> c;
-  for (int d = 0; d < 3; ++d) c[d] = keep * (Jm23 * sigma_tr[d] * sigma_tr[d] - Ibar);
+FIRN_HD Vec3<T> symmetric_eigenvalues(const Mat3<T>& A) {
+  const T m = trace(A) / T(3);
+  Mat3<T> K = A;
+  for (int d = 0; d < 3; ++d) K(d, d) -= m;
+  const T p = ddot(K, K) / T(6);
+  if (!(p > T(0))) return Vec3<T>{{m, m, m}};
+  const T sp = std::sqrt(p);
+  T c = determinant(K) / (T(2) * p * sp);
+  c = c > T(1) ? T(1) : (c < T(-1) ? T(-1) : c);
+  const T phi = std::acos(c) / T(3);
+  const T cos_phi = std::cos(phi), sin_phi = std::sin(phi);
+  const T half_sqrt3 = T(0.8660254037844386);
+  const T e0 = m + T(2) * sp * cos_phi;
+  const T e2 = m + T(2) * sp * (T(-0.5) * cos_phi - half_sqrt3 * sin_phi);  // phi + 2 pi / 3
+  return Vec3<T>{{e0, T(3) * m - e0 - e2, e2}};
+}
+
+// sqrt(A) of a symmetric positive definite A (Hoger and Carlson 1984).
+template <class T>
+FIRN_HD Mat3<T> spd_sqrt(const Mat3<T>& A) {
+  const Vec3<T> e = symmetric_eigenvalues(A);
+  T l[3];
+  for (int d = 0; d < 3; ++d) l[d] = std::sqrt(e[d] > T(0) ? e[d] : T(0));
+  const T i1 = l[0] + l[1] + l[2], i2 = l[0] * l[1] + l[1] * l[2] + l[2] * l[0], i3 = l[0] * l[1] * l[2];
+  const T inv = T(1) / ((l[0] + l[1]) * (l[1] + l[2]) * (l[2] + l[0]));  // = 1 / (i1 i2 - i3)
+  Mat3<T> S = (-inv) * (A * A) + (inv * (i1 * i1 - i2)) * A;
+  for (int d = 0; d < 3; ++d) S(d, d) += inv * i1 * i3;
+  return S;
+}
+
+template <class T>
+FIRN_HD Mat3<T> rescale_isochoric_deviator(const Mat3<T>& F_tr, T Jm23, T Ibar, T keep, T J_new) {
+  const Mat3<T> b = mul_transposed(F_tr, F_tr);
+  Mat3<T> D = Jm23 * b;
+  for (int d = 0; d < 3; ++d) D(d, d) -= Ibar;
+  // x solves h(x) = det(x I + keep D) - 1 = x^3 - x keep^2 D:D / 2 + keep^3 det D - 1 = 0 (tr D = 0).
+  // h is increasing and convex where all factors x + keep d_i are positive, and h(Ibar) >= 0 for
+  // keep <= 1 (for a fixed trace the product grows as the deviation shrinks), so Newton from
+  // x = Ibar decreases monotonically to the root without leaving that region.
+  const T k2j2 = keep * keep * ddot(D, D) / T(2), k3d = keep * keep * keep * determinant(D);
   T x = Ibar;
   for (int it = 0; it < 32; ++it) {
-    const T a0 = x + c[0], a1 = x + c[1], a2 = x + c[2];
-    const T h = a0 * a1 * a2 - T(1);
-    const T step = h / (a0 * a1 + a1 * a2 + a0 * a2);
+    const T h = x * x * x - x * k2j2 + k3d - T(1);
+    const T step = h / (T(3) * x * x - k2j2);
     x -= step;
     if (!(step > T(4) * FloatLimits<T>::kEpsilon * x)) break;
   }
-  Vec3<T> s_new;
-  for (int d = 0; d < 3; ++d) s_new[d] = std::sqrt(x + c[d]);
-  // Rescale by (J_new / prod)^(1/3): J_new^(1/3) from bbar -> b_e, and the rounding left in prod(x + c_i).
-  const T scale = std::cbrt(J_new / (s_new[0] * s_new[1] * s_new[2]));
-  for (int d = 0; d < 3; ++d) s_new[d] *= scale;
-  return svd_compose(U, s_new, V);
+  // A = (x I + keep D) (Ibar I + D)^-1, symmetric since the factors commute.
+  Mat3<T> P = keep * D, Q = D;
+  for (int d = 0; d < 3; ++d) {
+    P(d, d) += x;
+    Q(d, d) += Ibar;
+  }
+  const Mat3<T> A = P * inverse(Q);
+  Mat3<T> As;  // symmetrised against rounding
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) As(r, c) = T(0.5) * (A(r, c) + A(c, r));
+  const Mat3<T> F = spd_sqrt(As) * F_tr;
+  // det F = J_new exactly up to one rounding: the factor (J_new / J_tr)^(1/3) and what rounding
+  // left in det sqrt(A) = 1 in one cube root.
+  return std::cbrt(J_new / determinant(F)) * F;
 }
 
 }  // namespace firn

@@ -21,10 +21,10 @@
 //      Box 9.1's trace keeps tr(bbar_e) but not det(bbar_e) = 1, i.e. it would change J. The stress
 //      depends on b_e only through J and dev(b_e), so the trace part is free: it is set to the x with
 //      det(x I + (1 - beta) dev(bbar_tr)) = 1 (the volume-preserving variant of step 4, cf. Simo 1992,
-//      CMAME 99:61-112), which keeps J and s exactly. Since b_e and b_tr share
-//      eigenvectors, F_E = U diag(sigma_i) V^T with F_tr = U diag(sigma_tr_i) V^T (svd3) and
-//      sigma_i = J^(1/3) sqrt(x + (1 - beta) d_i), d_i the principal values of dev(bbar_tr).
-// The elastic path costs one F F^T and no SVD.
+//      CMAME 99:61-112), which keeps J and s exactly. Since b_e and b_tr share eigenvectors, F_E is
+//      F_tr stretched by a symmetric tensor coaxial with b_tr (kernels/constitutive/deviator_rescale.hpp).
+// Neither path takes an SVD: the elastic one costs one F F^T, the plastic one a closed-form square
+// root of a symmetric 3x3 tensor.
 //
 // G2 != 0: the elastic response is the full Mooney-Rivlin one, but the yield function and the
 // return above use only the G1 part s = G1 dev(bbar_e): after a return the G1 part of the
@@ -40,7 +40,6 @@
 #include "kernels/constitutive/plastic_state.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/mat3.hpp"
-#include "kernels/svd3.hpp"
 
 namespace firn {
 
@@ -96,10 +95,7 @@ struct HyperelasticPlastic {
     state.alpha += sqrt23 * dgamma;
 
     // Step 3: dev(bbar_e) = (1 - beta) dev(bbar_tr) at the same J (kernels/constitutive/deviator_rescale.hpp).
-    Mat3<T> U, V;
-    Vec3<T> sig;
-    svd3(F, U, sig, V);
-    F = rescale_isochoric_deviator(U, sig, V, Jm23, Ibar, keep, J);
+    F = rescale_isochoric_deviator(F, Jm23, Ibar, keep, J);
     return true;
   }
 };

@@ -31,8 +31,9 @@
 // NACC return, which keeps p between the tips, changes no volume there, so it never softens in
 // uniaxial tension or compacts in shear (measured: a pulled fresh_snow bar lost only 17% of its
 // force by 3% strain and stayed in one piece; a wheel sank through 0.21 m of fresh snow).
-// The new F_E = U diag(sigma) V^T has dev(bbar_e) = (q / q_t) dev(bbar_tr) and det = J_E(p)
-// (kernels/constitutive/deviator_rescale.hpp). The elastic path (y <= 0) costs one F F^T and no SVD.
+// The new F_E, the trial one stretched by a symmetric tensor coaxial with b_tr, has
+// dev(bbar_e) = (q / q_t) dev(bbar_tr) and det = J_E(p) (kernels/constitutive/deviator_rescale.hpp).
+// Neither path takes an SVD: the elastic one (y <= 0) costs one F F^T.
 #pragma once
 
 #include <cmath>
@@ -44,7 +45,6 @@
 #include "kernels/float_limits.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/mat3.hpp"
-#include "kernels/svd3.hpp"
 
 namespace firn {
 
@@ -93,10 +93,7 @@ struct SnowCamClay {
     const Return r = radial_return(p, q, J, Jt, eps, p0);
     const T J_new = std::sqrt(T(1) - T(2) * Jt * r.p / elastic.K);
     state.Jp = Jt / J_new;
-    Mat3<T> U, V;
-    Vec3<T> sig;
-    svd3(F, U, sig, V);
-    F = rescale_isochoric_deviator(U, sig, V, Jm23, Ibar, q > T(0) ? r.q / q : T(0), J_new);
+    F = rescale_isochoric_deviator(F, Jm23, Ibar, q > T(0) ? r.q / q : T(0), J_new);
     return true;
   }
 
