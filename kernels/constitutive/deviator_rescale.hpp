@@ -7,7 +7,8 @@
 // of bbar is free: it is the x with det(x I + keep D) = 1 (the volume-preserving variant of Simo and
 // Hughes, Computational Inelasticity, Box 9.1 step 4; cf. Simo 1992, CMAME 99:61-112). Used by the
 // J2 radial return (keep = 1 - beta, J_new = J_tr) and the Cam-clay return (keep = q / q_tr, J_new
-// from the returned pressure).
+// from the returned pressure). The caller passes stretch = (J_new / J_tr)^(1/3), which it has at hand
+// (1 for a volume-preserving return, so the J2 return takes no cube root here).
 //
 // No SVD: b and bbar = x I + keep D are coaxial, so F = S F_tr with the symmetric stretch
 //   S = (J_new / J_tr)^(1/3) sqrt(A),   A = (x I + keep D) (Ibar I + D)^-1,
@@ -50,9 +51,36 @@ FIRN_HD Vec3<T> symmetric_eigenvalues(const Mat3<T>& A) {
   return Vec3<T>{{e0, T(3) * m - e0 - e2, e2}};
 }
 
-// sqrt(A) of a symmetric positive definite A (Hoger and Carlson 1984).
+// ||A - I||_F^2 below which spd_sqrt takes the binomial series: its remainder after the cubic term,
+// at most 5/128 e^4 / (1 - e) for e = ||A - I||_F, is then below the precision's epsilon
+// (float: e < 0.04; double: e < 2.5e-4).
+template <class T>
+struct SqrtSeriesRadius;
+template <>
+struct SqrtSeriesRadius<float> {
+  static constexpr float kSquared = 1.6e-3f;
+};
+template <>
+struct SqrtSeriesRadius<double> {
+  static constexpr double kSquared = 6.25e-8;
+};
+
+// sqrt(A) of a symmetric positive definite A. Near the identity, where a plastic step of snow
+// almost always lands, the series sqrt(I + E) = I + E/2 - E^2/8 + E^3/16 (two matrix products);
+// elsewhere the closed form of Hoger and Carlson (1984).
 template <class T>
 FIRN_HD Mat3<T> spd_sqrt(const Mat3<T>& A) {
+  Mat3<T> E = A;
+  for (int d = 0; d < 3; ++d) E(d, d) -= T(1);
+  if (ddot(E, E) < SqrtSeriesRadius<T>::kSquared) {
+    Mat3<T> S = T(1) / T(16) * E;
+    for (int d = 0; d < 3; ++d) S(d, d) -= T(1) / T(8);
+    S = E * S;
+    for (int d = 0; d < 3; ++d) S(d, d) += T(0.5);
+    S = E * S;
+    for (int d = 0; d < 3; ++d) S(d, d) += T(1);
+    return S;
+  }
   const Vec3<T> e = symmetric_eigenvalues(A);
   T l[3];
   for (int d = 0; d < 3; ++d) l[d] = std::sqrt(e[d] > T(0) ? e[d] : T(0));
@@ -64,7 +92,7 @@ FIRN_HD Mat3<T> spd_sqrt(const Mat3<T>& A) {
 }
 
 template <class T>
-FIRN_HD Mat3<T> rescale_isochoric_deviator(const Mat3<T>& F_tr, T Jm23, T Ibar, T keep, T J_new) {
+FIRN_HD Mat3<T> rescale_isochoric_deviator(const Mat3<T>& F_tr, T Jm23, T Ibar, T keep, T J_new, T stretch) {
   const Mat3<T> b = mul_transposed(F_tr, F_tr);
   Mat3<T> D = Jm23 * b;
   for (int d = 0; d < 3; ++d) D(d, d) -= Ibar;
@@ -90,10 +118,10 @@ FIRN_HD Mat3<T> rescale_isochoric_deviator(const Mat3<T>& F_tr, T Jm23, T Ibar, 
   Mat3<T> As;  // symmetrised against rounding
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) As(r, c) = T(0.5) * (A(r, c) + A(c, r));
-  const Mat3<T> F = spd_sqrt(As) * F_tr;
-  // det F = J_new exactly up to one rounding: the factor (J_new / J_tr)^(1/3) and what rounding
-  // left in det sqrt(A) = 1 in one cube root.
-  return std::cbrt(J_new / determinant(F)) * F;
+  const Mat3<T> F = stretch * (spd_sqrt(As) * F_tr);
+  // det F = J_new up to one rounding: det sqrt(A) = 1 and stretch^3 = J_new / J_tr up to a few
+  // roundings e, which the factor cbrt(1 + e) = 1 + e / 3 + O(e^2) removes.
+  return ((T(2) + J_new / determinant(F)) / T(3)) * F;
 }
 
 }  // namespace firn

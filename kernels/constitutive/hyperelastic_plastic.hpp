@@ -95,7 +95,7 @@ struct HyperelasticPlastic {
     state.alpha += sqrt23 * dgamma;
 
     // Step 3: dev(bbar_e) = (1 - beta) dev(bbar_tr) at the same J (kernels/constitutive/deviator_rescale.hpp).
-    F = rescale_isochoric_deviator(F, Jm23, Ibar, keep, J);
+    F = rescale_isochoric_deviator(F, Jm23, Ibar, keep, J, T(1));
     return true;
   }
 };

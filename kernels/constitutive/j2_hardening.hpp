@@ -43,16 +43,25 @@ struct J2Hardening {
     slope = sigma_y0 * n * K_h * p / base;
   }
 
+  // The floored law and its slope, in one evaluation of the power law.
+  FIRN_HD void evaluate(T alpha, T& sigma, T& slope) const {
+    raw(alpha, sigma, slope);
+    if (!(sigma > sigma_y_min)) {
+      sigma = sigma_y_min;
+      slope = T(0);
+    }
+  }
+
   FIRN_HD T yield_stress(T alpha) const {
     T sigma, slope;
-    raw(alpha, sigma, slope);
-    return sigma > sigma_y_min ? sigma : sigma_y_min;
+    evaluate(alpha, sigma, slope);
+    return sigma;
   }
 
   FIRN_HD T slope(T alpha) const {
     T sigma, slope;
-    raw(alpha, sigma, slope);
-    return sigma > sigma_y_min ? slope : T(0);
+    evaluate(alpha, sigma, slope);
+    return slope;
   }
 };
 
@@ -75,15 +84,16 @@ FIRN_HD J2ReturnSolution<T> solve_j2_return(const J2Hardening<T>& h, T alpha_n, 
   T lo = T(0), hi = s_norm / (T(2) * mu_bar);
   T x = T(0);
   for (int it = 1; it <= kMaxIterations; ++it) {
-    const T a = alpha_n + sqrt23 * x;
-    const T f = s_norm - T(2) * mu_bar * x - sqrt23 * h.yield_stress(a);
+    T sigma_y, slope;
+    h.evaluate(alpha_n + sqrt23 * x, sigma_y, slope);
+    const T f = s_norm - T(2) * mu_bar * x - sqrt23 * sigma_y;
     if (std::fabs(f) <= T(4) * kEps * s_norm) return {x, it};
     if (f > T(0))
       lo = x;
     else
       hi = x;
     if (hi - lo <= T(2) * kEps * hi) return {x, it};
-    const T df = -T(2) * mu_bar - (T(2) / T(3)) * h.slope(a);
+    const T df = -T(2) * mu_bar - (T(2) / T(3)) * slope;
     const T newton = df < T(0) ? x - f / df : hi;  // df >= 0 only under strong softening
     x = (newton > lo && newton < hi) ? newton : T(0.5) * (lo + hi);
   }

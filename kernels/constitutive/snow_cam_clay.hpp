@@ -93,7 +93,7 @@ struct SnowCamClay {
     const Return r = radial_return(p, q, J, Jt, eps, p0);
     const T J_new = std::sqrt(T(1) - T(2) * Jt * r.p / elastic.K);
     state.Jp = Jt / J_new;
-    F = rescale_isochoric_deviator(F, Jm23, Ibar, q > T(0) ? r.q / q : T(0), J_new);
+    F = rescale_isochoric_deviator(F, Jm23, Ibar, q > T(0) ? r.q / q : T(0), J_new, std::cbrt(J_new / J));
     return true;
   }
 

@@ -1,0 +1,124 @@
+// The SVD-free pieces of the plastic returns (kernels/constitutive/deviator_rescale.hpp): the
+// eigenvalues of a symmetric 3x3 tensor, its square root on both sides of the near-identity series'
+// radius (squared back to A, continuous across the switch, repeated and widely spread eigenvalues),
+// and the rescale itself (det F = J_new, dev(bbar) = keep dev(bbar_tr), the trial rotation kept).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "kernels/constitutive/deviator_rescale.hpp"
+#include "kernels/svd3.hpp"
+
+namespace firn {
+namespace {
+
+Mat3<double> random_rotation(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  Vec3<double> axis{{u(rng), u(rng), u(rng)}};
+  const double n = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  for (int d = 0; d < 3; ++d) axis[d] /= n;
+  return axis_angle_rotation(axis, 3.0 * u(rng));
+}
+
+// Q diag(e) Q^T.
+Mat3<double> with_eigenvalues(const Mat3<double>& Q, double e0, double e1, double e2) {
+  Mat3<double> D{};
+  D(0, 0) = e0;
+  D(1, 1) = e1;
+  D(2, 2) = e2;
+  return mul_transposed(Q * D, Q);
+}
+
+double max_abs_diff(const Mat3<double>& a, const Mat3<double>& b) {
+  double m = 0;
+  for (int q = 0; q < 9; ++q) m = std::max(m, std::abs(a.m[q] - b.m[q]));
+  return m;
+}
+
+TEST(SymmetricEigenvalues, MatchConstructedSpectrum) {
+  std::mt19937 rng(3);
+  for (const auto& e : {Vec3<double>{{3.0, 1.0, 0.5}}, Vec3<double>{{2.0, 2.0, 5.0}}, Vec3<double>{{1.0, 1.0, 1.0}},
+                        Vec3<double>{{100.0, 1.0, 0.01}}}) {
+    const Vec3<double> got = symmetric_eigenvalues(with_eigenvalues(random_rotation(rng), e[0], e[1], e[2]));
+    double want[3] = {e[0], e[1], e[2]}, have[3] = {got[0], got[1], got[2]};
+    std::sort(want, want + 3);
+    std::sort(have, have + 3);
+    for (int d = 0; d < 3; ++d) EXPECT_NEAR(have[d], want[d], 1e-6 * want[2]) << d;
+  }
+}
+
+// S S = A and S symmetric, for spectra near the identity (the series), just outside the series'
+// radius, repeated and widely spread (the closed form).
+TEST(SpdSqrt, SquaresBackToA) {
+  std::mt19937 rng(11);
+  const double r = std::sqrt(SqrtSeriesRadius<double>::kSquared);
+  const Vec3<double> spectra[] = {{{1 + 0.3 * r, 1 - 0.2 * r, 1 + 0.1 * r}},
+                                  {{1 + 2 * r, 1 - r, 1}},
+                                  {{1.05, 0.97, 1.0}},
+                                  {{2.0, 2.0, 5.0}},
+                                  {{4.0, 4.0, 4.0}},
+                                  {{100.0, 1.0, 0.01}}};
+  for (const Vec3<double>& e : spectra) {
+    const Mat3<double> A = with_eigenvalues(random_rotation(rng), e[0], e[1], e[2]);
+    const Mat3<double> S = spd_sqrt(A);
+    const double scale = std::max({e[0], e[1], e[2]});
+    EXPECT_LT(max_abs_diff(S * S, A), 1e-13 * scale) << e[0] << " " << e[1] << " " << e[2];
+    EXPECT_LT(max_abs_diff(S, transpose(S)), 1e-13 * std::sqrt(scale));
+  }
+}
+
+// The series and the closed form meet: just inside and just outside the radius, in float, the root
+// is the same to a few roundings, and each squares back to A to float precision.
+TEST(SpdSqrt, SeriesAndClosedFormAgreeAtTheRadius) {
+  std::mt19937 rng(5);
+  const float r = std::sqrt(SqrtSeriesRadius<float>::kSquared);
+  for (int i = 0; i < 20; ++i) {
+    const Mat3<double> Q = random_rotation(rng);
+    Mat3<float> inside, outside;
+    // ||A - I||_F = r (1 -+ 1e-3) along the direction (1, -1, 0) / sqrt(2).
+    const double a = 0.999 * r / std::sqrt(2.0), b = 1.001 * r / std::sqrt(2.0);
+    const Mat3<double> Ai = with_eigenvalues(Q, 1 + a, 1 - a, 1), Ao = with_eigenvalues(Q, 1 + b, 1 - b, 1);
+    for (int q = 0; q < 9; ++q) {
+      inside.m[q] = float(Ai.m[q]);
+      outside.m[q] = float(Ao.m[q]);
+    }
+    const Mat3<float> Si = spd_sqrt(inside), So = spd_sqrt(outside);
+    for (int q = 0; q < 9; ++q) {
+      // The two roots differ by about (b - a) / 2 = 1e-3 r / sqrt(2) in their eigenvalues, plus rounding.
+      EXPECT_NEAR(Si.m[q], So.m[q], 1e-3f * r + 1e-6f) << q;
+      EXPECT_NEAR((Si * Si).m[q], inside.m[q], 1e-6f) << q;
+      EXPECT_NEAR((So * So).m[q], outside.m[q], 1e-6f) << q;
+    }
+  }
+}
+
+// The rescale keeps the trial rotation, sets det F to J_new and scales dev(bbar) by keep, for a
+// small return (the series) and a large one (the closed form).
+TEST(RescaleIsochoricDeviator, SetsVolumeAndDeviatorKeepsRotation) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  for (const double keep : {0.9999, 0.5, 0.0})
+    for (int i = 0; i < 10; ++i) {
+      Mat3<double> F = Mat3<double>::identity();
+      for (double& x : F.m) x += u(rng);
+      const double J = determinant(F), Jm23 = std::pow(J, -2.0 / 3.0), J_new = 0.8 * J;
+      const Mat3<double> b = mul_transposed(F, F);
+      const double Ibar = Jm23 * trace(b) / 3;
+      const Mat3<double> out = rescale_isochoric_deviator(F, Jm23, Ibar, keep, J_new, std::cbrt(0.8));
+      EXPECT_NEAR(determinant(out), J_new, 1e-14);
+      const Mat3<double> b_out = mul_transposed(out, out);
+      const double Jm23_out = std::pow(J_new, -2.0 / 3.0);
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+          const double dev_tr = Jm23 * b(r, c) - (r == c ? Ibar : 0);
+          const double dev_out = Jm23_out * (b_out(r, c) - (r == c ? trace(b_out) / 3 : 0));
+          EXPECT_NEAR(dev_out, keep * dev_tr, 1e-12) << keep << " " << r << c;
+        }
+      EXPECT_LT(max_abs_diff(polar_rotation(out), polar_rotation(F)), 1e-12);
+    }
+}
+
+}  // namespace
+}  // namespace firn
