@@ -23,8 +23,8 @@
 //      det(x I + (1 - beta) dev(bbar_tr)) = 1 (the volume-preserving variant of step 4, cf. Simo 1992,
 //      CMAME 99:61-112), which keeps J and s exactly. Since b_e and b_tr share eigenvectors, F_E is
 //      F_tr stretched by a symmetric tensor coaxial with b_tr (kernels/constitutive/deviator_rescale.hpp).
-// Neither path takes an SVD: the elastic one costs one F F^T, the plastic one a closed-form square
-// root of a symmetric 3x3 tensor.
+// Neither path takes an SVD: the elastic one costs one F F^T, the plastic one the square root of a
+// symmetric 3x3 tensor (a series near the identity, a closed form elsewhere).
 //
 // G2 != 0: the elastic response is the full Mooney-Rivlin one, but the yield function and the
 // return above use only the G1 part s = G1 dev(bbar_e): after a return the G1 part of the
