@@ -481,9 +481,6 @@ class Simulation {
       }
     return r;
   }
-  ParticleRanges averaged_ranges() const {
-    return ranges_where([&](std::size_t m) { return materials_[m].volume_averaged; });
-  }
 
   int contact_group(std::size_t m) const { return m < contact_.group.size() ? contact_.group[m] : 0; }
 
@@ -510,20 +507,25 @@ class Simulation {
   }
 
   // F-bar by volume averaging (kernels/step/volume_average.hpp) for the averaged materials, on the
-  // grid activated by bin(), which it leaves cleared for P2G. No launch when none has particles.
+  // grid activated by bin(), which it leaves cleared for P2G: each contact group's among themselves
+  // (bodies in contact do not share their volume change). No launch for a group without them.
   template <class ShapeT>
   void average_volume() {
-    const ParticleRanges averaged = averaged_ranges();
-    if (averaged.count == 0) return;
-    const ParticleView<T> pv = storage_.view();
-    const SparseGridView<T> gv = grid_.view();
-    const BinningView bins = binning_.view();
-    const GridGeometry<T> g = grid_.geometry();
-    backend_.scatter_blocks("volume_average.p2g", binning_.colouring(), VolumeScatter<T, ShapeT>{pv, gv, bins, g, averaged});
-    const std::vector<std::uint32_t>& blocks = binning_.particle_blocks();
-    backend_.gather_blocks("volume_average.g2p", blocks.data(), blocks.size(),
-                           VolumeGather<T, ShapeT>{pv, gv, bins, g, averaged}, Sum{});
-    grid_.clear(backend_);
+    for (int group = 0; group < 2; ++group) {
+      const ParticleRanges averaged =
+          ranges_where([&](std::size_t m) { return materials_[m].volume_averaged && contact_group(m) == group; });
+      if (averaged.count == 0) continue;
+      const ParticleView<T> pv = storage_.view();
+      const SparseGridView<T> gv = grid_.view();
+      const BinningView bins = binning_.view();
+      const GridGeometry<T> g = grid_.geometry();
+      backend_.scatter_blocks("volume_average.p2g", binning_.colouring(),
+                              VolumeScatter<T, ShapeT>{pv, gv, bins, g, averaged});
+      const std::vector<std::uint32_t>& blocks = binning_.particle_blocks();
+      backend_.gather_blocks("volume_average.g2p", blocks.data(), blocks.size(),
+                             VolumeGather<T, ShapeT>{pv, gv, bins, g, averaged}, Sum{});
+      grid_.clear(backend_);
+    }
   }
 
   // The scalar state of save_state and load_state, once for both directions (the counts of
@@ -557,8 +559,8 @@ class Simulation {
 
   // One step: bin -> F-bar volume averaging (nearly incompressible materials only) -> constitutive
   // update -> P2G -> grid update -> G2P with the stability guard. With two contact groups, each
-  // group has its own P2G, grid update and G2P, and between the grid updates and G2P the contact
-  // update joins them (kernels/step/contact_update.hpp); F-bar still averages over both.
+  // group has its own F-bar, P2G, grid update and G2P, and between the grid updates and G2P the
+  // contact update joins them (kernels/step/contact_update.hpp).
   template <class ShapeT, Transfer kTransfer>
   void step_impl(T dt) {
     bin<ShapeT>(dt);

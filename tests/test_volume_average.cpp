@@ -4,6 +4,7 @@
 // is for a compressible one, whose results volume averaging must not change.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/simulation.hpp"
@@ -66,6 +67,47 @@ TEST(VolumeAveraging, LeavesACompressibleSolidAlone) {
   const Spread after = after_one_step(0.3, before);
   EXPECT_NEAR(after.rms, before.rms, 1e-9);
   EXPECT_NEAR(after.mean_J, before.mean_J, 1e-9);
+}
+
+// Two nearly incompressible blocks side by side, sharing the grid nodes between them: the lower
+// compressed to J = 0.97, the upper at J = 1, one step as above. In one contact group F-bar averages
+// across the interface; in two it averages each block among its own particles, so both keep their
+// uniform J exactly.
+TEST(VolumeAveraging, ContactGroupsAverageApart) {
+  for (const bool apart : {false, true}) {
+    SimulationConfig c;
+    c.dx = 0.02;
+    c.gravity = {0, 0, 0};
+    c.fixed_dt = 1e-9;
+    Simulation<double, backend::OpenMP> sim(c);
+    const ElasticModuli rubber = ElasticModuli::from_E_nu(1e7, 0.49);
+    const int lower = sim.add_material({"lower", "neo_hookean", 1000, rubber});
+    const int upper = sim.add_material({"upper", "neo_hookean", 1000, rubber});
+    if (apart) sim.set_contact_group(upper, 1, Friction<double>{FrictionLaw::coulomb, 0.0});
+    sim.add_particles(lower, fill_box(c.domain_min, c.dx, 2, {0.3, 0.3, 0.3}, {0.7, 0.5, 0.7}), {0, 0, 0}, 1e-6);
+    sim.add_particles(upper, fill_box(c.domain_min, c.dx, 2, {0.3, 0.5, 0.3}, {0.7, 0.7, 0.7}), {0, 0, 0}, 1e-6);
+    sim.prepare();
+    const ParticleView<double> pv = sim.particles();
+    const ParticleRange below = sim.material_range(lower);
+    for (std::size_t p = below.begin; p < below.end; ++p)
+      for (int d = 0; d < 3; ++d) pv.F[4 * d][p] = std::cbrt(0.97);
+    sim.step();
+    const ParticleView<double> after = sim.particles();
+    const ParticleRange lower_now = sim.material_range(lower);
+    double worst[2] = {0, 0};  // largest |J - J0| per block
+    for (std::size_t p = 0; p < after.n; ++p) {
+      const bool in_lower = p >= lower_now.begin && p < lower_now.end;
+      double& w = worst[in_lower ? 0 : 1];
+      w = std::max(w, std::fabs(Simulation<double, backend::OpenMP>::total_J(after, p) - (in_lower ? 0.97 : 1.0)));
+    }
+    if (apart) {
+      EXPECT_LT(worst[0], 1e-9);
+      EXPECT_LT(worst[1], 1e-9);
+    } else {
+      EXPECT_GT(worst[0], 1e-3);  // the interface's particles take part of the other block's J
+      EXPECT_GT(worst[1], 1e-3);
+    }
+  }
 }
 
 }  // namespace
