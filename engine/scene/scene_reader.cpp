@@ -790,6 +790,8 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
       toml::table co;
       TableReader c(ctx, subtable(ctx, root, "contact", empty), scene_section("contact"), "contact", co);
       s.contact_friction = read_friction(c);
+      if (root.contains("contact") && s.tire && s.tire->rubber)  // one friction joins the two contact groups
+        c.fail("friction", "is the rubber tire's: its contact takes [tire] friction_law and friction; remove [contact]");
       c.finish();
       out.insert("contact", std::move(co));
     }

@@ -289,7 +289,8 @@ std::vector<SectionSpec> build_schema() {
                "Contact between the two contact groups of [materials.NAME] contact_group (multi-velocity-field "
                "contact, Bardenhagen et al. 2000): at a grid node both groups reach, the normal part of their "
                "relative velocity is removed while they approach and the tangential part slowed by friction. "
-               "Used only when both groups have particles.",
+               "Used only when both groups have particles. Not with a rubber [tire]: its rubber is in group 1 "
+               "and its contact takes the [tire] friction.",
                {
                    {"friction_law", K::choice, Q::dimensionless, "\"coulomb\"", false,
                     "coulomb, or velocity_dependent: the thesis' Eq. 4.9 (see [[colliders]])", -kInf, kInf, false,
