@@ -68,6 +68,7 @@ struct SimulationConfig {
   double cfl = 0.4;        // dt = cfl dx / max_p(c_p + |v_p|)
   double dt_max = 1e-3;    // cap on the adaptive step
   double fixed_dt = 0;     // when > 0, every step uses it (benchmarks, convergence studies)
+  double damping = 0;      // grid velocity damping rate (1/s), kernels/grid_update.hpp; 0: none
   Transfer transfer = Transfer::apic;
   double flip_alpha = 0.95;
   Shape shape = Shape::quadratic;
@@ -90,8 +91,8 @@ struct Diagnostics {
 // out of the elastic store (kernels/step/constitutive_update.hpp), in J. With the kinetic and
 // elastic energy E(t) = K + W, the residual E(0) + gravity + colliders + loads - plastic - E(t) is
 // what the discretisation dissipated: the transfers' numerical dissipation and what the walls and
-// colliders take out of the motion they stop or rub (and, in a conveyor scene, the energy of the
-// particles it injects and removes).
+// colliders take out of the motion they stop or rub, what a grid damping (SimulationConfig::damping)
+// takes, and, in a conveyor scene, the energy of the particles it injects and removes.
 struct EnergyBudget {
   double gravity = 0, colliders = 0, loads = 0;  // work on the material
   double plastic = 0;                            // V0 (W(F_trial) - W(F_returned)), summed
@@ -667,6 +668,7 @@ class Simulation {
     up.dt = dt;
     up.dx = g.dx;
     up.min_mass = min_node_mass_;
+    up.damping_factor = T(1 / (1 + config_.damping * double(dt)));
     up.collider_count = int(colliders_.size());
     for (std::size_t c = 0; c < colliders_.size(); ++c) {
       colliders_[c].advance(double(dt));

@@ -1,6 +1,8 @@
 // Grid update: momentum to velocity, gravity, colliders and the domain walls, for one 4x4x4 block.
 //   v_i = (m v)_i / m_i + dt g, then each collider containing the node at the end of the step,
-//   then each wall whose band contains the node (DESIGN.md section 3).
+//   then each wall whose band contains the node (DESIGN.md section 3). With a damping rate c > 0
+//   (SimulationConfig::damping), v_i is first divided by 1 + c dt: mass-proportional damping,
+//   implicit in the drag so that any c dt is stable, for quasi-static states (dynamic relaxation).
 // Collider reactions: the impulse a collider gives a node is m_i (v_after - v_before); the force on
 // the collider is its opposite over dt, summed over the block into `reactions` (per block slot and
 // collider: force xyz, then torque xyz about the collider's origin). When `footprint` is set, the
@@ -39,6 +41,7 @@ struct GridUpdateParams {
   T origin[3];
   T dx;
   T min_mass;  // nodes lighter than this are treated as empty
+  T damping_factor;  // 1 / (1 + c dt) for a damping rate c: v after gravity is multiplied by it
   int collider_count;
   Collider<T> colliders[kMaxColliders];  // posed at the end of the step
   T* reactions;                           // [slot][collider][6], written when collider_count > 0
@@ -74,6 +77,8 @@ FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, co
       for (int d = 0; d < 3; ++d) work[kGravityWork] += *mass * p.dt * p.gravity[d] * (v[d] - T(0.5) * p.dt * p.gravity[d]);
     if (kTransfer == Transfer::flip)
       for (int d = 0; d < 3; ++d) data[(Ch::kOldVelocity + d) * kBlockNodes + l] *= inv_m;
+    if (p.damping_factor != T(1))
+      for (int d = 0; d < 3; ++d) v[d] *= p.damping_factor;
 
     const int node[3] = {block[0] * kBlockSize + l / (kBlockSize * kBlockSize),
                          block[1] * kBlockSize + (l / kBlockSize) % kBlockSize, block[2] * kBlockSize + l % kBlockSize};

@@ -556,6 +556,7 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     c.cfl = r.number("cfl");
     c.dt_max = r.number("dt_max");
     c.fixed_dt = r.number("fixed_dt");
+    c.damping = r.number("damping");
     c.gravity = r.vec3("gravity");
     c.transfer = Transfer(r.choice_index("transfer"));
     c.flip_alpha = r.number("flip_alpha");

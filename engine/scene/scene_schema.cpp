@@ -71,6 +71,11 @@ std::vector<SectionSpec> build_schema() {
                    {"dt_max", K::number, Q::time, "0.001", false, "largest time step", 0, kInf, true},
                    {"fixed_dt", K::number, Q::time, "0.0", false,
                     "when > 0, every step uses this time step instead of the CFL one", 0, kInf},
+                   {"damping", K::number, Q::rate, "0.0", false,
+                    "grid velocity damping rate: each step divides the grid's velocities by 1 + damping dt "
+                    "(mass-proportional damping, for quasi-static states such as a tire's static footprint; "
+                    "what it takes is in energy_residual)",
+                    0, kInf},
                    {"gravity", K::vector3, Q::acceleration, "[0.0, -9.81, 0.0]", false, "gravitational acceleration"},
                    {"transfer", K::choice, Q::dimensionless, "\"apic\"", false,
                     "particle-grid transfer: apic (MLS-MPM), pic or flip (FLIP/PIC blend)", -kInf, kInf, false,

@@ -64,6 +64,8 @@ constexpr Unit kUnits[] = {
     {"kg m^2", Quantity::moment_of_inertia, 1},
     {"kg m2", Quantity::moment_of_inertia, 1},
     {"g cm^2", Quantity::moment_of_inertia, 1e-7},
+    {"1/s", Quantity::rate, 1},
+    {"1/ms", Quantity::rate, 1e3},
 };
 
 std::string trim(const std::string& s) {
@@ -95,6 +97,7 @@ const char* quantity_name(Quantity q) {
     case Quantity::angle: return "angle";
     case Quantity::angular_velocity: return "angular velocity";
     case Quantity::moment_of_inertia: return "moment of inertia";
+    case Quantity::rate: return "rate";
   }
   return "";
 }

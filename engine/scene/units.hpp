@@ -20,6 +20,7 @@ enum class Quantity {
   angle,             // SI: radians
   angular_velocity,  // SI: rad/s
   moment_of_inertia,  // SI: kg m^2
+  rate,               // SI: 1/s
 };
 
 // The SI unit written after a value of this quantity, e.g. "Pa" ("" for dimensionless).
