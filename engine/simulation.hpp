@@ -37,13 +37,13 @@
 #include "engine/sparse_grid.hpp"
 #include "engine/stability_guard.hpp"
 #include "kernels/binning_view.hpp"
+#include "kernels/body_acceleration.hpp"
 #include "kernels/boundary_conditions.hpp"
 #include "kernels/colliders.hpp"
 #include "kernels/combine.hpp"
 #include "kernels/grid_update.hpp"
 #include "kernels/guard_summary.hpp"
 #include "kernels/hd.hpp"
-#include "kernels/load_ramp.hpp"
 #include "kernels/motion_sums.hpp"
 #include "kernels/particle_state.hpp"
 #include "kernels/shape_functions.hpp"
@@ -250,6 +250,21 @@ class Simulation {
     loads_assigned_ = false;
   }
 
+  // A follower pressure (kernels/body_acceleration.hpp), for a tire's inflation: particle first + k
+  // carries the rest area vector areas[k] (N dA in m^2, N pointing from the pressurised side into
+  // the body); call it after adding those particles and before the first step (or prepare()). The
+  // pressure (Pa) acts on every such area, ramped linearly from zero over ramp_time (0: at once).
+  void add_pressure_surface(std::size_t first, const std::vector<Point>& areas) {
+    if (prepared_) throw std::invalid_argument("pressure surfaces are added before the first step");
+    if (first + areas.size() > storage_.size()) throw std::invalid_argument("pressure surface past the particles");
+    enable(Attribute::area0);
+    enable(Attribute::body_accel);
+    ParticleView<T> pv = storage_.view();
+    for (std::size_t k = 0; k < areas.size(); ++k)
+      for (int d = 0; d < 3; ++d) pv.area0[d][first + k] = T(areas[k][d]);
+  }
+  void set_pressure(double pressure, double ramp_time) { pressure_ = {pressure, ramp_time}; }
+
   // Allocates an on_demand attribute with its initial value: x0 the current positions, Jp one,
   // anything else zero.
   void enable(Attribute a) {
@@ -307,7 +322,7 @@ class Simulation {
   void step(double dt) {
     prepare();
     if (!loads_assigned_) assign_loads();
-    ramp_loads(time_ + dt);
+    update_body_accelerations(time_ + dt);
     const bool quadratic = config_.shape == Shape::quadratic;
     switch (config_.transfer) {
       case Transfer::apic:
@@ -787,21 +802,29 @@ class Simulation {
     }
   }
 
-  // Writes body_accel for the ramp factors at time t, only when one of them changed.
-  void ramp_loads(double t) {
-    if (loads_.empty()) return;
+  // Writes body_accel (kernels/body_acceleration.hpp) for the loads' ramp factors and the pressure
+  // at time t: every step while a pressure acts (it follows the deformation), else only when a
+  // load's factor changed.
+  void update_body_accelerations(double t) {
+    const bool pressurised = pressure_.value != 0 && storage_.has(Attribute::area0);
+    if (loads_.empty() && !pressurised) return;
     bool changed = false;
     std::vector<T> accel(3 * (loads_.size() + 1), T(0));
     for (std::size_t k = 0; k < loads_.size(); ++k) {
       Load& l = loads_[k];
-      const double f = l.ramp_time > 0 ? std::min(1.0, t / l.ramp_time) : 1.0;
+      const double f = ramp_factor(t, l.ramp_time);
       changed = changed || f != l.factor;
       l.factor = f;
       for (int d = 0; d < 3; ++d) accel[3 * (k + 1) + d] = T(f * l.accel[d]);
     }
-    if (!changed) return;
-    backend_.parallel_for("loads.ramp", storage_.size(), LoadRamp<T>{storage_.view(), accel.data()});
+    if (!changed && !pressurised) return;
+    const T pressure = pressurised ? T(ramp_factor(t, pressure_.ramp_time) * pressure_.value) : T(0);
+    backend_.parallel_for(pressurised ? "loads.pressure" : "loads.ramp", storage_.size(),
+                          BodyAcceleration<T>{storage_.view(), loads_.empty() ? nullptr : accel.data(), pressure});
   }
+
+  // A linear ramp from zero at t = 0 to one at ramp_time (0: one at once).
+  static double ramp_factor(double t, double ramp_time) { return ramp_time > 0 ? std::min(1.0, t / ramp_time) : 1.0; }
 
   // "constitutive.<model>": a string literal per model type, as launch names must outlive profiles.
   template <class Model>
@@ -838,6 +861,9 @@ class Simulation {
   std::vector<T> work_;  // [slot][kWorkKinds] of the last grid update
   FootprintMap footprint_;
   std::vector<Load> loads_;
+  struct Pressure {
+    double value = 0, ramp_time = 0;  // Pa, s
+  } pressure_;
   std::vector<int> staged_material_;  // material of each particle added since the last prepare()
   SparseGrid<T> grid_;
   // Multi-velocity-field contact: group B's grid, the normals' grid and group B's grid-update

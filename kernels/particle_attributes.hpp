@@ -21,6 +21,7 @@ namespace firn {
   X(x0, 3, Real, on_demand, "rest position (m)")                                                       \
   X(body_accel, 3, Real, on_demand, "external body acceleration (m/s^2)")                              \
   X(load, 1, Index, on_demand, "1 + index of the load the particle carries, 0 for none")              \
+  X(area0, 3, Real, on_demand, "rest area vector N dA of a pressurised surface (m^2), N into the body") \
   X(alpha, 1, Real, on_demand, "equivalent plastic strain (J2 plasticity)")                            \
   X(Jp, 1, Real, on_demand, "plastic volume ratio J_P = det F_P; F then holds the elastic part")
 

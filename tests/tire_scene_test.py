@@ -1,7 +1,8 @@
 """End-to-end checks of the tire experiment (issue 5): scenes/tire_on_snow.toml at preview
 resolution, for each tread and for a loaded axle, and a small `firn sweep` of it; the free-rolling
 loaded wheel of scenes/tire_fresh_snow.toml (issue 16) and its sinkage and motion resistance; the
-deformable rubber tire of scenes/tire_rubber_on_ground.toml (issue 17) landing on the road.
+deformable rubber tire of scenes/tire_rubber_on_ground.toml (issue 17) landing on the road, and the
+inflated one of scenes/tire_inflated_on_ground.toml standing on its air.
 
 Usage: python3 tire_scene_test.py FIRN REPO_ROOT SCRATCH_DIR TEST
 """
@@ -16,6 +17,7 @@ from end_to_end import FIRN, ROOT, SCRATCH, TEST, check, fresh
 SCENE = os.path.join(ROOT, "scenes", "tire_on_snow.toml")
 FRESH_SNOW = os.path.join(ROOT, "scenes", "tire_fresh_snow.toml")
 RUBBER = os.path.join(ROOT, "scenes", "tire_rubber_on_ground.toml")
+INFLATED = os.path.join(ROOT, "scenes", "tire_inflated_on_ground.toml")
 TIRE_COLUMNS = ["traction", "vertical_load", "axle_torque", "motion_resistance_coefficient", "slip_ratio",
                 "axle_height", "sinkage", "peak_pressure", "displaced", "accumulated", "injected", "removed",
                 "tire_fx", "ground_fy"]
@@ -118,5 +120,23 @@ def test_rubber_tire():
     check(float(rows[-1]["peak_tread_stress"]) > 0, "the landed tread carries no stress")
 
 
+def test_inflated_tire():
+    # The inflated tire (issue 17 item 2) at its own resolution (it has no preview: one particle per
+    # cell cannot hold a carcass in tension), 10 ms into its 20 ms inflation: the pressure has
+    # done work expanding it (load_work), its air cavity's rubber is counted as tire, not snow, and
+    # the road's contact patch is measured (contact_length; 0 before the tire touches it).
+    out = fresh("inflated")
+    r = subprocess.run([FIRN, "run", INFLATED, "--out", out, "--set", "simulation.end_time=10 ms"],
+                       capture_output=True, text=True)
+    check(r.returncode == 0, f"firn run exited {r.returncode}: {r.stderr}")
+    with open(os.path.join(out, "metrics.csv")) as f:
+        rows = list(csv.DictReader(f))
+    last = rows[-1]
+    check(float(last["load_work"]) > 0, f"the pressure did no work: load_work {last['load_work']}")
+    check(math.isfinite(float(last["contact_length"])) and float(last["contact_length"]) >= 0,
+          f"contact_length {last['contact_length']}")
+    check(float(last["displaced"]) == 0 and float(last["accumulated"]) == 0, "rubber particles counted as snow")
+
+
 {"treads": test_treads, "loaded_axle": test_loaded_axle, "free_wheel": test_free_wheel, "sweep": test_sweep,
- "rubber_tire": test_rubber_tire}[TEST]()
+ "rubber_tire": test_rubber_tire, "inflated_tire": test_inflated_tire}[TEST]()

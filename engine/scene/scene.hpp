@@ -45,6 +45,10 @@ struct ColliderSpec {
 // axle along z at `center`, turning so that its tread at the ground moves toward -x at `speed`
 // (the tire rolls toward +x over ground that moves toward -x). A free spin (issue 16) starts at
 // the ground's speed and then turns under the snow's torque alone.
+// An inflated rubber tire's default rim radius, as a fraction of its radius (a 16-inch rim in a
+// 650 mm passenger tire is 0.62 of it).
+constexpr double kDefaultRimFraction = 0.6;
+
 struct TireSpec {
   std::string tread = "angled_footstep";
   Point center = {0, 0, 0};
@@ -58,8 +62,12 @@ struct TireSpec {
   WallType boundary = WallType::separate;
   Friction<double> friction{};
   bool rubber = false;      // body = "rubber": particles of `material` on a rigid rim
-  int material = -1;        // rubber: its [materials.NAME] table
-  double rim_radius = 0;    // rubber: radius - tread_depth - carcass
+  int material = -1;        // rubber: its [materials.NAME] table (the tread's)
+  int carcass_material = -1;  // rubber: the carcass band's table (default: material's)
+  double carcass_radius = 0;  // rubber: the carcass's inner radius, radius - tread_depth - carcass
+  double rim_radius = 0;      // rubber: carcass_radius, or below it with an air cavity
+  double sidewall = 0;        // rubber with a cavity: thickness of the two sidewalls closing it
+  double pressure = 0, pressure_ramp = 0;  // rubber: inflation pressure (Pa) on the cavity, its ramp (s)
 };
 
 // A conveyor snow bed (issue 5): the ground y <= `ground` moves toward -x at `speed` carrying a

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "engine/pressure_surface.hpp"
 #include "engine/splitmix64.hpp"
 #include "engine/tread_patterns.hpp"
 
@@ -113,21 +114,41 @@ std::vector<Collider<double>> scene_colliders_at(const SceneSpec& scene, double 
   return out;
 }
 
-void fill_rubber_tire(const SceneSpec& scene, std::vector<Point>& positions, std::vector<Point>& velocities) {
+RubberTireFill fill_rubber_tire(const SceneSpec& scene) {
   const TireSpec& t = *scene.tire;
   const Collider<double> solid = tire_solid(t);
+  const double wall_z = 0.5 * t.width - t.sidewall;  // a cavity's inner faces, |z - centre| = wall_z
+  const bool cavity = t.rim_radius < t.carcass_radius;
+  auto radius_at = [&](const Point& p) { return std::hypot(p[0] - t.center[0], p[1] - t.center[1]); };
   const Point lo = {t.center[0] - t.radius, t.center[1] - t.radius, t.center[2] - 0.5 * t.width};
   const Point hi = {t.center[0] + t.radius, t.center[1] + t.radius, t.center[2] + 0.5 * t.width};
-  positions = fill_lattice(scene.config.domain_min, scene.config.dx, scene.per_axis(), lo, hi, [&](const Point& p) {
-    const double rx = p[0] - t.center[0], ry = p[1] - t.center[1];
+  RubberTireFill out;
+  out.positions = fill_lattice(scene.config.domain_min, scene.config.dx, scene.per_axis(), lo, hi, [&](const Point& p) {
     double n[3];
-    return rx * rx + ry * ry >= t.rim_radius * t.rim_radius && solid.distance(p.data(), n) < 0;
+    if (!(solid.distance(p.data(), n) < 0)) return false;
+    const double r = radius_at(p);
+    if (r >= t.carcass_radius) return true;  // tread and carcass
+    return cavity && r >= t.rim_radius && std::fabs(p[2] - t.center[2]) >= wall_z;  // a sidewall
   });
-  if (positions.empty()) throw SceneError(scene.path + ": [tire] the rubber tire has no particles (finer dx needed)");
+  if (out.positions.empty())
+    throw SceneError(scene.path + ": [tire] the rubber tire has no particles (finer dx needed)");
+  const std::size_t n = out.positions.size();
   const double w = solid.angular_velocity[2];
-  velocities.resize(positions.size());
-  for (std::size_t i = 0; i < positions.size(); ++i)
-    velocities[i] = {-w * (positions[i][1] - t.center[1]), w * (positions[i][0] - t.center[0]), 0};
+  out.velocities.resize(n);
+  out.carcass.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& p = out.positions[i];
+    out.velocities[i] = {-w * (p[1] - t.center[1]), w * (p[0] - t.center[0]), 0};
+    const double r = radius_at(p);
+    out.carcass[i] = r >= t.carcass_radius && r < t.radius - t.tread_depth;
+  }
+  if (!(t.pressure > 0)) {
+    out.areas.assign(n, Point{0, 0, 0});
+    return out;
+  }
+  out.areas = inner_cylinder_areas(out.positions, t.center, t.carcass_radius, wall_z, scene.config.dx / scene.per_axis());
+  if (out.areas.empty()) throw SceneError(scene.path + ": [tire] the air cavity has no surface particles (finer dx needed)");
+  return out;
 }
 
 void fill_body(const SceneSpec& scene, std::size_t index, std::vector<Point>& positions, std::vector<Point>& velocities) {

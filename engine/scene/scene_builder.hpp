@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "engine/collider_body.hpp"
@@ -21,9 +22,15 @@ namespace firn {
 // for a body that gets no particles.
 void fill_body(const SceneSpec& scene, std::size_t index, std::vector<Point>& positions, std::vector<Point>& velocities);
 
-// The lattice sites of a rubber tire (inside its tread's solid, outside its rim) and their
-// velocities, turning with the tire at its starting rate.
-void fill_rubber_tire(const SceneSpec& scene, std::vector<Point>& positions, std::vector<Point>& velocities);
+// The lattice sites of a rubber tire (inside its tread's solid, outside its rim; with an air cavity,
+// the tread and carcass above it and the two sidewalls beside it) with their velocities, turning
+// with the tire at its starting rate.
+struct RubberTireFill {
+  std::vector<Point> positions, velocities;
+  std::vector<char> carcass;  // 1: the carcass band below the tread, 0: tread or sidewall
+  std::vector<Point> areas;   // rest area vector N dA on the carcass's inner surface (inflated), else 0
+};
+RubberTireFill fill_rubber_tire(const SceneSpec& scene);
 
 // The engine's colliders for a scene's [[colliders]] entry, its [tire] and its [conveyor] ground.
 ColliderBody collider_body(const ColliderSpec& spec);
@@ -42,12 +49,14 @@ ColliderBody ground_body(const ConveyorSpec& spec, double dx);
 // turning at its starting rate.
 std::vector<Collider<double>> scene_colliders_at(const SceneSpec& scene, double time);
 
-// Which of the simulation's colliders the scene's tire (a rubber tire's rim) and conveyor ground
-// are (-1: none), and the engine materials of a rubber tire (first, count; count 0: none).
+// Which of the simulation's colliders the scene's tire (a rubber tire's rim), conveyor ground and a
+// rubber tire's road are (-1: none), and the engine materials of a rubber tire's parts.
 struct BuiltScene {
   int tire = -1;
   int ground = -1;
-  int rubber_first = 0, rubber_count = 0;
+  std::pair<int, int> rubber{0, 0};   // a rubber tire's tread (and sidewalls): first engine material, count
+  std::pair<int, int> carcass{0, 0};  // its carcass band when of another material (count 0: none)
+  int road = -1;  // a rubber tire's road: the first plane among [[colliders]] (-1: none)
 };
 
 // Rest volume of one particle: the lattice cell (dx / per_axis)^3.
@@ -73,12 +82,35 @@ BuiltScene build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
   BuiltScene built;
   if (scene.tire && scene.tire->rubber) {
     const TireSpec& t = *scene.tire;
-    fill_rubber_tire(scene, positions, velocities);
-    add_table_particles(sim, materials, t.material, positions, positions, velocities, particle_volume(scene));
-    built.rubber_first = materials.first(t.material), built.rubber_count = materials.count(t.material);
-    for (int m = 0; m < built.rubber_count; ++m) sim.set_contact_group(built.rubber_first + m, 1, t.friction);
+    const RubberTireFill fill = fill_rubber_tire(scene);
+    std::vector<Point> areas;  // of the particles in the order they are added
+    for (const int part : {0, 1}) {  // tread and sidewalls, then the carcass when their materials differ
+      if (part == 1 && t.carcass_material == t.material) break;
+      std::vector<Point> x, v, a;
+      for (std::size_t i = 0; i < fill.positions.size(); ++i)
+        if (t.carcass_material == t.material || fill.carcass[i] == part) {
+          x.push_back(fill.positions[i]);
+          v.push_back(fill.velocities[i]);
+          a.push_back(fill.areas[i]);
+        }
+      const int table = part ? t.carcass_material : t.material;
+      for (const std::size_t k : add_table_particles(sim, materials, table, x, x, v, particle_volume(scene)))
+        areas.push_back(a[k]);
+    }
+    if (t.pressure > 0) {
+      sim.add_pressure_surface(sim.particle_count() - areas.size(), areas);
+      sim.set_pressure(t.pressure, t.pressure_ramp);
+    }
+    built.rubber = {materials.first(t.material), materials.count(t.material)};
+    if (t.carcass_material != t.material)
+      built.carcass = {materials.first(t.carcass_material), materials.count(t.carcass_material)};
+    for (const std::pair<int, int>& part : {built.rubber, built.carcass})
+      for (int m = 0; m < part.second; ++m) sim.set_contact_group(part.first + m, 1, t.friction);
   }
-  for (const ColliderSpec& c : scene.colliders) sim.add_collider(collider_body(c));
+  for (const ColliderSpec& c : scene.colliders) {
+    const int index = sim.add_collider(collider_body(c));
+    if (scene.tire && scene.tire->rubber && built.road < 0 && c.kind == ColliderSpec::Kind::plane) built.road = index;
+  }
   if (scene.tire) built.tire = sim.add_collider(tire_body(*scene.tire));
   if (scene.conveyor) {
     const ConveyorSpec& c = *scene.conveyor;

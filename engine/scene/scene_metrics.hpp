@@ -11,7 +11,9 @@
 //     a conveyor: the undisturbed snow surface ground + depth minus the tread's lowest point
 //     axle_height - radius; the depth of the wheel's bottom below the surface it rolls into),
 //     peak_pressure (the footprint's peak, Pa, when written; a rubber tire: peak_tread_stress, the
-//     tread stress map's peak, engine/output/tread_stress.hpp),
+//     tread stress map's peak, engine/output/tread_stress.hpp), contact_length (a rubber tire on a
+//     road, the first plane among [[colliders]]: its contact patch's length along x on the road,
+//     engine/output/footprint_figure.hpp),
 //     displaced (particles farther than metrics.displaced_distance from where the undisturbed
 //     ground would have carried them: x0 - U t e_x; the thesis' Table 5.1) and accumulated
 //     (particles inside the tread's outer radius and width: snow carried in the tread, Figure 5.6),
@@ -37,6 +39,7 @@
 #include "engine/simulation.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/particle_attributes.hpp"
+#include "kernels/particle_ranges.hpp"
 
 namespace firn {
 
@@ -51,10 +54,10 @@ template <class T>
 struct SnowCountTerm {
   ParticleView<T> pv;
   T cx, cy, cz, radius2, half_width, shift, limit2;
-  std::size_t tire_begin, tire_end;  // a rubber tire's particles, which are not snow
+  ParticleRanges tire;  // a rubber tire's particles (its tread's and its carcass's), which are not snow
 
   FIRN_HD void operator()(std::size_t p, SnowCounts& acc) const {
-    if (p >= tire_begin && p < tire_end) return;
+    if (tire.holds(p)) return;
     const T dx = pv.x[0][p] - (pv.x0[0][p] - shift), dy = pv.x[1][p] - pv.x0[1][p], dz = pv.x[2][p] - pv.x0[2][p];
     acc.displaced += dx * dx + dy * dy + dz * dz > limit2;
     const T rx = pv.x[0][p] - cx, ry = pv.x[1][p] - cy;
@@ -82,10 +85,13 @@ class SceneMetrics {
   // Starts the footprint map when the scene writes one.
   void prepare(Simulation<T, Backend>& sim) const {
     if (writes_footprint()) sim.enable_footprint(built_.tire);
+    if (measures_road_contact()) sim.enable_footprint(built_.road);
   }
   // The footprint is the rigid tire's contact pressure; a rubber tire's contact is with particles.
   bool writes_footprint() const { return built_.tire >= 0 && scene_.metrics.footprint && !scene_.tire->rubber; }
   bool writes_tread_stress() const { return built_.tire >= 0 && scene_.metrics.footprint && scene_.tire->rubber; }
+  // A rubber tire on a road plane: the contact patch's length on the road (its footprint map's).
+  bool measures_road_contact() const { return writes_tread_stress() && built_.road >= 0; }
   // The folder of the per-frame map: footprint (a rigid tire's contact pressure), tread_stress (a
   // rubber tire's tread stress), or "" when the scene writes none.
   std::string map_dir() const { return writes_footprint() ? "footprint" : writes_tread_stress() ? "tread_stress" : ""; }
@@ -100,6 +106,7 @@ class SceneMetrics {
       if (conveyor_) h += ",sinkage";
       if (writes_footprint()) h += ",peak_pressure";
       if (writes_tread_stress()) h += ",peak_tread_stress";
+      if (measures_road_contact()) h += ",contact_length";
       h += ",displaced,accumulated";
     }
     if (conveyor_) h += ",injected,removed";
@@ -141,6 +148,14 @@ class SceneMetrics {
         sim.footprint().reset();
       }
       if (writes_tread_stress()) r += number(write_tread_stress(sim, map_stem));
+      if (measures_road_contact()) {
+        const FootprintWindow w{tire.collider.center[0], tire.collider.center[2], t.radius,
+                                0.5 * t.width + 2 * scene_.config.dx};
+        FootprintField road = footprint_field(sim.footprint(), w);
+        for (double& q : road.pressure) q = -q;  // the force on the road is down, the pressure on it up
+        r += number(contact_length(road));
+        sim.footprint().reset();
+      }
       const SnowCounts n = count_snow(sim, ground_speed);
       r += number(double(n.displaced)) + number(double(n.accumulated));
     }
@@ -171,8 +186,8 @@ class SceneMetrics {
     Collider<double> solid = tire_solid(t);
     for (int d = 0; d < 3; ++d) solid.center[d] = rim.center[d];
     for (int i = 0; i < 9; ++i) solid.rotation[i] = rim.rotation[i];
-    const std::size_t begin = sim.material_range(built_.rubber_first).begin;
-    const std::size_t end = sim.material_range(built_.rubber_first + built_.rubber_count - 1).end;
+    const std::size_t begin = sim.material_range(built_.rubber.first).begin;
+    const std::size_t end = sim.material_range(built_.rubber.first + built_.rubber.second - 1).end;
     const double dx = scene_.config.dx;
     const FootprintField f =
         tread_stress_field(sim.particles(), begin, end, solid, t.radius - t.tread_depth, 0.5 * t.width + 2 * dx, dx);
@@ -195,14 +210,15 @@ class SceneMetrics {
     const T radius2 = T(scene_.tire->radius * scene_.tire->radius), half_width = T(0.5 * scene_.tire->width);
     const T shift = T(ground_speed * sim.time());
     const T limit2 = T(scene_.metrics.displaced_distance * scene_.metrics.displaced_distance);
-    std::size_t tire_begin = 0, tire_end = 0;  // a rubber tire's materials are consecutive ranges
-    if (built_.rubber_count > 0) {
-      tire_begin = sim.material_range(built_.rubber_first).begin;
-      tire_end = sim.material_range(built_.rubber_first + built_.rubber_count - 1).end;
-    }
+    ParticleRanges tire;
+    for (const std::pair<int, int>& t : {built_.rubber, built_.carcass})
+      if (t.second > 0) {
+        tire.begin[tire.count] = sim.material_range(t.first).begin;
+        tire.end[tire.count++] = sim.material_range(t.first + t.second - 1).end;
+      }
     return sim.backend().parallel_reduce(
         "metrics.snow", pv.n, SnowCounts{},
-        SnowCountTerm<T>{pv, cx, cy, cz, radius2, half_width, shift, limit2, tire_begin, tire_end}, MergeSnowCounts{});
+        SnowCountTerm<T>{pv, cx, cy, cz, radius2, half_width, shift, limit2, tire}, MergeSnowCounts{});
   }
 
   static std::string number(double v) {

@@ -297,13 +297,13 @@ const toml::table& subtable(const Context& ctx, const toml::table& root, const s
 }
 
 // The index of the material named by the table's `material` key.
-int material_index(TableReader& r, const std::vector<MaterialInfo>& materials) {
-  const std::string material = *r.text("material");
+int material_index(TableReader& r, const std::vector<MaterialInfo>& materials, const char* key = "material") {
+  const std::string material = *r.text(key);
   std::vector<std::string> names;
   for (const auto& m : materials) names.push_back(m.name);
   const auto it = std::find(names.begin(), names.end(), material);
   if (it == names.end())
-    r.fail("material", "no material '" + material + "' (defined: " + join(names) + ")" + suggestion(material, names));
+    r.fail(key, "no material '" + material + "' (defined: " + join(names) + ")" + suggestion(material, names));
   return int(it - names.begin());
 }
 
@@ -711,8 +711,28 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     t.rubber = body == "rubber";
     if (t.rubber) {
       t.material = material_index(r, s.materials);
-      t.rim_radius = t.radius - t.tread_depth - r.number("carcass");
-      if (!(t.rim_radius > 0)) r.fail("carcass", "leaves no rim: tread_depth + carcass must be less than the radius");
+      t.carcass_material = r.text("carcass_material") ? material_index(r, s.materials, "carcass_material") : t.material;
+      t.carcass_radius = t.radius - t.tread_depth - r.number("carcass");
+      if (!(t.carcass_radius > 0)) r.fail("carcass", "leaves no rim: tread_depth + carcass must be less than the radius");
+      t.pressure = r.number("pressure");
+      t.pressure_ramp = r.number("pressure_ramp");
+      const std::optional<double> rim = r.optional_number("rim_radius");
+      t.rim_radius = rim ? *rim : t.pressure > 0 ? kDefaultRimFraction * t.radius : t.carcass_radius;
+      o.insert_or_assign("rim_radius", t.rim_radius);
+      if (!(t.rim_radius <= t.carcass_radius))
+        r.fail("rim_radius", "must not exceed the carcass's inner radius, radius - tread_depth - carcass");
+      if (t.pressure > 0 && !(t.rim_radius < t.carcass_radius))
+        r.fail("pressure", "needs an air cavity: a rim_radius below the carcass's inner radius");
+      if (t.pressure > 0 && s.particles_per_cell < 8)  // measured: at 1 per cell the tire blows apart
+        r.fail("pressure", "needs at least 8 particles per cell: with one, MPM tears the carcass apart under the "
+                           "pressure's tension (a --preview of a scene with 8 has one)");
+      const double spacing = s.config.dx / s.per_axis();
+      if (t.pressure > 0 && !(t.radius - t.tread_depth - t.carcass_radius >= 2 * spacing - 1e-12))
+        r.fail("carcass", "must be at least two particle spacings thick (" + number_text(2 * spacing) +
+                              " m) to hold an inflation pressure");
+      t.sidewall = r.number("sidewall");
+      if (t.rim_radius < t.carcass_radius && !(t.sidewall < 0.5 * t.width))
+        r.fail("sidewall", "must be less than half the width");
     }
     t.loaded = axle == "loaded";
     t.free_spin = spin == "free";

@@ -226,14 +226,38 @@ std::vector<SectionSpec> build_schema() {
                     "repetitions of the pattern around the circumference", 1, 200},
                    {"body", K::choice, Q::dimensionless, "\"rigid\"", false,
                     "rigid (a collider) or rubber: the tread and a carcass band below it filled with particles of "
-                    "`material`, driven through a rigid rim (a sticky cylinder under the carcass that takes the "
-                    "tire's spin and axle) and meeting the snow through contact between contact groups (the "
-                    "rubber's material goes in group 1, with this table's friction)",
+                    "`material` (and `carcass_material`), driven through a rigid rim (a sticky cylinder under the "
+                    "carcass, or under an air cavity closed by two sidewalls, that takes the tire's spin and axle) "
+                    "and meeting the snow through contact between contact groups (the rubber's materials go in "
+                    "group 1, with this table's friction)",
                     -kInf, kInf, false, {"rigid", "rubber"}},
                    {"material", K::text, Q::dimensionless, "", true, "NAME of the rubber's [materials.NAME] table",
                     -kInf, kInf, false, {}, "rubber"},
+                   {"carcass_material", K::text, Q::dimensionless, "", false,
+                    "NAME of the [materials.NAME] table of the carcass band (default: `material`), e.g. a stiffer "
+                    "isotropic stand-in for a belted, cord-reinforced carcass; the tread and the sidewalls are of "
+                    "`material`",
+                    -kInf, kInf, false, {}, "rubber"},
                    {"carcass", K::number, Q::length, "\"20 mm\"", false,
-                    "thickness of the rubber carcass below the tread, down to the rim", 0, kInf, true, {}, "rubber"},
+                    "thickness of the rubber carcass below the tread (down to the rim without an air cavity)", 0,
+                    kInf, true, {}, "rubber"},
+                   {"rim_radius", K::number, Q::length, "", false,
+                    "radius of the rigid rim. Below the carcass's inner radius (radius - tread_depth - carcass) it "
+                    "leaves an air cavity between rim and carcass, closed by two rubber sidewalls (default: 0.6 "
+                    "radius with a `pressure`, else the carcass's inner radius: the carcass sits on the rim)",
+                    0, kInf, true, {}, "rubber"},
+                   {"sidewall", K::number, Q::length, "\"8 mm\"", false,
+                    "thickness of the two sidewalls that close an air cavity, from the rim to the carcass", 0, kInf,
+                    true, {}, "rubber"},
+                   {"pressure", K::number, Q::pressure, "0.0", false,
+                    "inflation pressure: a follower pressure on the carcass's inner surface over the air cavity, "
+                    "carried by Nanson's formula as it deforms (the cavity's volume change does not change it). "
+                    "The sidewalls are not loaded: flat rubber plates would balloon where a tire's curved, "
+                    "corded sidewalls do not; they join the carcass to the rim, like the radial springs of a "
+                    "flexible-ring tire model",
+                    0, kInf, false, {}, "rubber"},
+                   {"pressure_ramp", K::number, Q::time, "\"20 ms\"", false,
+                    "time over which the pressure rises linearly from zero", 0, kInf, false, {}, "rubber"},
                    {"spin", K::choice, Q::dimensionless, "\"driven\"", false,
                     "driven (the tread turns at `speed`) or free (a towed, free-rolling wheel: its spin about the "
                     "axle turns under the snow's torque alone, from the spin whose tread speed is the conveyor's "
