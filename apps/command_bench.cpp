@@ -1,10 +1,11 @@
 // firn bench step [--problem NAME] [--steps N] [--threads N] [--backend serial|openmp|cuda]
 //                 [--precision float|double] [--transfer apic|pic|flip] [--domain-scale S]
-//                 [--enable ATTR]... [--idle-materials N]
+//                 [--enable ATTR]... [--idle-materials N] [--energy-budget]
 // Times the step loop alone (setup excluded) and prints particles, steps,
 // particle_steps_per_second and state_hash, plus backend, threads, seconds and memory. --domain-scale,
 // --enable and --idle-materials add what the problem does not need (empty grid, attributes nobody
-// reads, materials without particles) to measure what skipping them saves (docs/performance.md).
+// reads, materials without particles) to measure what skipping them saves (docs/performance.md);
+// --energy-budget keeps the energy budget that `firn run` keeps, to measure its cost.
 // firn bench surface [--particles N] [--threads N] [--repeats N]
 // Times the snow surface reconstruction of a synthetic snow block; prints particles_per_second and
 // checks that the mesh is a closed manifold (outside the timing).
@@ -72,6 +73,7 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::IsMember({"x0", "alpha", "Jp", "body_accel", "load"}));
   step->add_option("--idle-materials", opts->idle_materials, "add materials without particles (to measure the skip)")
       ->check(CLI::Range(0, 64))->capture_default_str();
+  step->add_flag("--energy-budget", opts->energy_budget, "keep the energy budget, as firn run does (to measure its cost)");
   step->add_option("--domain-scale", opts->domain_scale,
                    "scale the domain box (same particles) to show that cost follows the particles")
       ->check(CLI::Range(1.0, 16.0))->capture_default_str();

@@ -1,8 +1,8 @@
 #!/bin/bash
 # What skipping unused work saves (docs/performance.md): `firn bench step` on cube_drop (512,000
-# particles, float) with, in turn, each thing the problem does not need added back, run
-# interleaved REPS times; prints each variant's median particle-steps/s, its ratio to the plain
-# problem, bytes per particle and grid memory.
+# particles, float) with, in turn, each thing the problem does not need added back, and the energy
+# budget that `firn run` keeps, run interleaved REPS times; prints each variant's median
+# particle-steps/s, its ratio to the plain problem, bytes per particle and grid memory.
 # Usage: bench/pay_for_use.sh [FIRN] [REPS] [STEPS] [THREADS]
 set -euo pipefail
 FIRN=${1:-build/release/firn}
@@ -17,6 +17,7 @@ variants=(
   "domain_x4|--domain-scale 4"
   "pic|--transfer pic"
   "flip|--transfer flip"
+  "energy_budget|--energy-budget"
 )
 for _ in $(seq "$REPS"); do
   for v in "${variants[@]}"; do

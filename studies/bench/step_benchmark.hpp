@@ -23,6 +23,7 @@ struct StepBenchmarkOptions {
   double domain_scale = 1;
   std::vector<std::string> enable;  // on_demand attributes to allocate although nothing reads them
   int idle_materials = 0;           // extra materials with no particles
+  bool energy_budget = false;       // keep the energy budget, as `firn run` does
 };
 
 struct StepBenchmarkResult {

@@ -34,6 +34,7 @@ StepBenchmarkResult benchmark_step_in(const StepBenchmarkOptions& o, const Backe
   for (int m = 0; m < o.idle_materials; ++m)
     sim.add_material({"idle" + std::to_string(m), "neo_hookean", 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
   for (const std::string& name : o.enable) sim.enable(attribute_named(name));
+  if (o.energy_budget) sim.enable_energy_budget();
   sim.prepare();
   const auto t0 = std::chrono::steady_clock::now();
   for (int s = 0; s < o.steps; ++s) sim.step();
