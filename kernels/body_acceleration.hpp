@@ -5,9 +5,9 @@
 //   - where the particle carries a rest area vector A0 (the on_demand attribute area0: a piece N dA
 //     of a surface that a pressure acts on, N pointing into the body), the follower pressure's force
 //     per unit mass, pressure cof(F) A0 / m. cof(F) = J F^-T carries the rest area element to the
-//     deformed one, n da = J F^-T N dA (Nanson's formula; Holzapfel, Nonlinear Solid Mechanics, 2000,
-//     Eq. 2.54), so the pressure follows the surface as it stretches and turns (a tire's inflation,
-//     issue 17). F is the particle's deformation gradient: its whole deformation for the elastic
+//     deformed one, n da = J F^-T N dA (Nanson's formula; e.g. Holzapfel, Nonlinear Solid Mechanics,
+//     2000, chapter 2), so the pressure follows the surface as it stretches and turns (a tire's
+//     inflation, issue 17). F is the particle's deformation gradient: its whole deformation for the elastic
 //     materials such a surface belongs to.
 #pragma once
 
