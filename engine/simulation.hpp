@@ -584,7 +584,8 @@ class Simulation {
     update_stress(dt);
     const GridGeometry<T> g = grid_.geometry();
     const ParticleView<T> pv = storage_.view();
-    if (budget_enabled_ && storage_.has(Attribute::body_accel))
+    const bool load_work = budget_enabled_ && storage_.has(Attribute::body_accel);
+    if (load_work)  // half of it with the velocities at the step's start, half at its end
       budget_.loads += backend_.parallel_reduce("energy_budget.loads", pv.n, 0.0, LoadWork<T>{pv, dt}, Sum{});
     const SparseGridView<T> gv = grid_.view();
     const bool contact = contact_active();
@@ -620,6 +621,7 @@ class Simulation {
           "g2p", blocks.data(), blocks.size(),
           G2PGather<T, ShapeT, kTransfer>{pv, contact_.grid_b.view(), bins_b, g, dt, T(config_.flip_alpha)}, MergeGuard{}));
     if (guard.reason != GuardReason::none) fail(guard, dt);
+    if (load_work) budget_.loads += backend_.parallel_reduce("energy_budget.loads", pv.n, 0.0, LoadWork<T>{pv, dt}, Sum{});
     max_speed_ = guard.max_speed;
   }
 

@@ -1,7 +1,11 @@
-// The work of the body accelerations (loads, a tilted gravity) in one step, as the term of a
-// parallel_reduce over particles: P2G kicks each particle's velocity by dt a before it scatters
-// (kernels/p2g.hpp), which adds 1/2 m (|v + dt a|^2 - |v|^2) = m dt a . (v + dt a / 2) to its kinetic
-// energy (issue 19, the energy budget).
+// The work of the body accelerations (loads, an inflation pressure, a tilted gravity) in one step,
+// as the term of a parallel_reduce over particles, taken twice per step: with the velocities at
+// the step's start and again with those at its end, each time half of m dt a . v. Their sum,
+// m dt a . (v_n + v_n+1) / 2, is the force times the step's mean velocity (the trapezoid rule in
+// time). In free flight, where v_n+1 = v_n + dt a, it is the kick's exact kinetic energy,
+// 1/2 m (|v_n + dt a|^2 - |v_n|^2); on a body held at rest by its stress it is zero, where the
+// kick's energy alone, m dt a . (v_n + dt a / 2), would count m dt^2 |a|^2 / 2 of work every step
+// that the stress then takes back (issue 19, the energy budget).
 #pragma once
 
 #include <cstddef>
@@ -18,11 +22,8 @@ struct LoadWork {
 
   FIRN_HD void operator()(std::size_t p, double& acc) const {
     double w = 0;
-    for (int d = 0; d < 3; ++d) {
-      const double a = double(pv.body_accel[d][p]);
-      w += a * (double(pv.v[d][p]) + 0.5 * double(dt) * a);
-    }
-    acc += double(pv.mass[p]) * double(dt) * w;
+    for (int d = 0; d < 3; ++d) w += double(pv.body_accel[d][p]) * double(pv.v[d][p]);
+    acc += 0.5 * double(pv.mass[p]) * double(dt) * w;
   }
 };
 
