@@ -84,18 +84,23 @@ BuiltScene build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
     const TireSpec& t = *scene.tire;
     const RubberTireFill fill = fill_rubber_tire(scene);
     std::vector<Point> areas;  // of the particles in the order they are added
-    for (const int part : {0, 1}) {  // tread and sidewalls, then the carcass when their materials differ
-      if (part == 1 && t.carcass_material == t.material) break;
+    // Adds the particles `take` picks as particles of `table`.
+    auto add_part = [&](int table, auto take) {
       std::vector<Point> x, v, a;
       for (std::size_t i = 0; i < fill.positions.size(); ++i)
-        if (t.carcass_material == t.material || fill.carcass[i] == part) {
+        if (take(i)) {
           x.push_back(fill.positions[i]);
           v.push_back(fill.velocities[i]);
           a.push_back(fill.areas[i]);
         }
-      const int table = part ? t.carcass_material : t.material;
       for (const std::size_t k : add_table_particles(sim, materials, table, x, x, v, particle_volume(scene)))
         areas.push_back(a[k]);
+    };
+    if (t.carcass_material == t.material) {
+      add_part(t.material, [](std::size_t) { return true; });
+    } else {  // tread and sidewalls, then the carcass band
+      add_part(t.material, [&](std::size_t i) { return !fill.carcass[i]; });
+      add_part(t.carcass_material, [&](std::size_t i) { return fill.carcass[i] != 0; });
     }
     if (t.pressure > 0) {
       sim.add_pressure_surface(sim.particle_count() - areas.size(), areas);

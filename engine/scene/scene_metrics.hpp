@@ -138,20 +138,19 @@ class SceneMetrics {
       const double bottom = tire.collider.center[1] - t.radius;
       r += number(tire.collider.center[1]);
       if (conveyor_) r += number(conveyor_->spec().ground + conveyor_->spec().depth - bottom);
+      // The grid columns within a radius of the axle along x and two cells past the tread's edges.
+      const FootprintWindow window{tire.collider.center[0], tire.collider.center[2], t.radius,
+                                   0.5 * t.width + 2 * scene_.config.dx};
       if (writes_footprint()) {
-        const FootprintWindow w{tire.collider.center[0], tire.collider.center[2], t.radius,
-                                0.5 * t.width + 2 * scene_.config.dx};
         char title[128];
         std::snprintf(title, sizeof title, "%s tread, t = %.1f ms, contact pressure averaged over the frame",
                       t.tread.c_str(), 1e3 * sim.time());
-        r += number(write_footprint(map_stem, sim.footprint(), w, tire.collider, title));
+        r += number(write_footprint(map_stem, sim.footprint(), window, tire.collider, title));
         sim.footprint().reset();
       }
       if (writes_tread_stress()) r += number(write_tread_stress(sim, map_stem));
       if (measures_road_contact()) {
-        const FootprintWindow w{tire.collider.center[0], tire.collider.center[2], t.radius,
-                                0.5 * t.width + 2 * scene_.config.dx};
-        FootprintField road = footprint_field(sim.footprint(), w);
+        FootprintField road = footprint_field(sim.footprint(), window);
         for (double& q : road.pressure) q = -q;  // the force on the road is down, the pressure on it up
         r += number(contact_length(road));
         sim.footprint().reset();
