@@ -53,6 +53,7 @@
 #include "kernels/step/contact_update.hpp"
 #include "kernels/step/g2p_gather.hpp"
 #include "kernels/step/grid_update_slots.hpp"
+#include "kernels/step/mirror_walls.hpp"
 #include "kernels/step/load_work.hpp"
 #include "kernels/step/p2g_scatter.hpp"
 #include "kernels/step/volume_average.hpp"
@@ -125,6 +126,7 @@ class Simulation {
     }
     g.dx = T(config.dx);
     g.inv_dx = T(1 / config.dx);
+    check_mirror_walls(config, g.nodes);
     if (config.transfer == Transfer::apic) storage_.enable(Attribute::C);  // only APIC's P2G reads C
     const int channels = config.transfer == Transfer::flip ? GridChannels<Transfer::flip>::kCount
                                                            : GridChannels<Transfer::apic>::kCount;
@@ -599,6 +601,8 @@ class Simulation {
       backend_.scatter_blocks("contact.normals", binning_.colouring(),
                               ContactNormalScatter<T, ShapeT>{pv, contact_.normals.view(), binning_.view(), g, group_b});
     }
+    const MirrorPlanes<T> mirror = mirror_planes<T>(config_.walls.data(), g.nodes);
+    if (mirror.any()) fold_mirror_images<kTransfer>(mirror, dt, contact);
     pose_colliders(dt, contact);
     backend_.parallel_for("grid_update", grid_.active_count(), GridUpdateSlots<T, kTransfer>{grid_.slots(), &grid_params_});
     if (contact) {
@@ -610,6 +614,7 @@ class Simulation {
                                                              contact_.normals.slots(), min_node_mass_,
                                                              T(kContactVolumeFraction) * g.dx * g.dx * g.dx, friction});
     }
+    if (mirror.any()) set_mirror_ghosts<kTransfer>(mirror, contact);
     collect_reactions(double(dt), contact);
     if (budget_enabled_) collect_work(contact);
     const std::vector<std::uint32_t>& blocks = binning_.particle_blocks();
@@ -623,6 +628,47 @@ class Simulation {
     if (guard.reason != GuardReason::none) fail(guard, dt);
     if (load_work) budget_.loads += backend_.parallel_reduce("energy_budget.loads", pv.n, 0.0, LoadWork<T>{pv, dt}, Sum{});
     max_speed_ = guard.max_speed;
+  }
+
+  // Mirror walls (kernels/step/mirror_walls.hpp): the ghost rows' P2G sums folded onto their inner
+  // images before the grid update, on each contact group's grid.
+  template <Transfer kTransfer>
+  void fold_mirror_images(const MirrorPlanes<T>& mirror, T dt, bool contact) {
+    const T g[3] = {T(config_.gravity[0]), T(config_.gravity[1]), T(config_.gravity[2])};
+    backend_.parallel_for("mirror.fold", grid_.active_count(),
+                          MirrorFold<T, kTransfer>{grid_.slots(), grid_.view(), mirror, dt, {g[0], g[1], g[2]}});
+    if (contact)
+      backend_.parallel_for("mirror.fold", grid_.active_count(),
+                            MirrorFold<T, kTransfer>{contact_.grid_b.slots(), contact_.grid_b.view(), mirror, dt,
+                                                     {g[0], g[1], g[2]}});
+  }
+
+  // ... and the ghost nodes given their images' velocities after it.
+  template <Transfer kTransfer>
+  void set_mirror_ghosts(const MirrorPlanes<T>& mirror, bool contact) {
+    backend_.parallel_for("mirror.ghosts", grid_.active_count(),
+                          MirrorGhosts<T, kTransfer>{grid_.slots(), grid_.view(), mirror});
+    if (contact)
+      backend_.parallel_for("mirror.ghosts", grid_.active_count(),
+                            MirrorGhosts<T, kTransfer>{contact_.grid_b.slots(), contact_.grid_b.view(), mirror});
+  }
+
+  // A mirror wall is a sticky or frictionless slip wall whose band holds at least the one ghost row
+  // that the quadratic and cubic B-splines of particles on the inner side reach, inside a domain
+  // wider than two bands.
+  static void check_mirror_walls(const SimulationConfig& config, const int nodes[3]) {
+    for (int f = 0; f < 6; ++f) {
+      const Wall<double>& w = config.walls[f];
+      if (!w.mirror) continue;
+      const std::string face = std::string(f % 2 ? "+" : "-") + "xyz"[f / 2];
+      if (w.type != WallType::sticky && w.type != WallType::slip)
+        throw std::invalid_argument("the mirror wall on face " + face + " must be sticky or slip");
+      if (w.type == WallType::slip && w.friction != 0)
+        throw std::invalid_argument("the mirror wall on face " + face + " is a symmetry plane: it takes no friction");
+      if (w.width < 2) throw std::invalid_argument("the mirror wall on face " + face + " needs a width of at least 2");
+      if (2 * w.width + 1 > nodes[f / 2])
+        throw std::invalid_argument("the domain is too narrow for the mirror wall on face " + face);
+    }
   }
 
   // Bins particles by block, reorders the arrays when the walk has become scattered and activates
@@ -697,7 +743,8 @@ class Simulation {
       up.origin[d] = g.origin[d];
     }
     for (int f = 0; f < 6; ++f)
-      up.walls[f] = Wall<T>{config_.walls[f].type, config_.walls[f].width, T(config_.walls[f].friction)};
+      up.walls[f] = Wall<T>{config_.walls[f].type, config_.walls[f].width, T(config_.walls[f].friction),
+                            config_.walls[f].mirror};
     const std::size_t slots = grid_.active_count();
     reactions_.assign(slots * colliders_.size() * kReactionComponents, T(0));
     up.reactions = reactions_.data();

@@ -24,6 +24,7 @@ struct Wall {
   WallType type = WallType::none;
   int width = 0;  // the wall acts on the nodes closer than `width` cells to the domain face
   T friction = 0;  // Coulomb coefficient mu
+  bool mirror = false;  // domain walls: imposed through mirrored ghost nodes (kernels/step/mirror_walls.hpp)
 };
 
 template <class T>

@@ -13,6 +13,13 @@ constexpr int kBlockNodes = kBlockSize * kBlockSize * kBlockSize;
 
 FIRN_HD int local_node(int lx, int ly, int lz) { return (lx * kBlockSize + ly) * kBlockSize + lz; }
 
+// Global index n of local node l of the block at block coordinates `block`.
+FIRN_HD void block_node(const int block[3], int l, int n[3]) {
+  n[0] = block[0] * kBlockSize + l / (kBlockSize * kBlockSize);
+  n[1] = block[1] * kBlockSize + (l / kBlockSize) % kBlockSize;
+  n[2] = block[2] * kBlockSize + l % kBlockSize;
+}
+
 template <class T>
 struct GridGeometry {
   T origin[3];

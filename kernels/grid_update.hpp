@@ -80,8 +80,8 @@ FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, co
     if (p.damping_factor != T(1))
       for (int d = 0; d < 3; ++d) v[d] *= p.damping_factor;
 
-    const int node[3] = {block[0] * kBlockSize + l / (kBlockSize * kBlockSize),
-                         block[1] * kBlockSize + (l / kBlockSize) % kBlockSize, block[2] * kBlockSize + l % kBlockSize};
+    int node[3];
+    block_node(block, l, node);
     if (p.collider_count > 0) {
       const T skin = T(kColliderSkin) * p.dx;
       const T x[3] = {p.origin[0] + T(node[0]) * p.dx, p.origin[1] + T(node[1]) * p.dx, p.origin[2] + T(node[2]) * p.dx};

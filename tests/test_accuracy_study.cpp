@@ -70,33 +70,36 @@ TEST(AccuracyStudy, EveryMethodOnceWithTheDefaultFirst) {
     for (std::size_t j = i + 1; j < methods.size(); ++j) EXPECT_FALSE(same_method(methods[i], methods[j]));
 }
 
-// Vibrating bar, levels 0-1: first order for every transfer (measured 0.94-1.13); APIC and FLIP
-// within 0.0112 at level 1 (measured 0.0105-0.0112), PIC within 0.0235 (0.0228-0.0235); float
-// within 5% of double (0.0107 against 0.0111 for APIC).
-TEST(AccuracyGuard, VibratingBarIsFirstOrderAndFloatMatchesDouble) {
+// Vibrating bar, levels 0-1, with its clamped mirror end: APIC within 5e-4 at level 1 (measured
+// 4.06e-4 in double; the plain sticky end gave 0.0111), falling at order above 1 (1.18); PIC and
+// FLIP are first order (measured 0.98, 1.11) within 0.026 and 0.0014 (0.0235, 0.00118). Float sits
+// on the 25 m bar's round-off floor (positions near 25 m take per-step increments of about 1e-4 m):
+// within 0.0013 (0.00113).
+TEST(AccuracyGuard, VibratingBarConvergesWithItsClampedMirrorEnd) {
   std::vector<VerificationMethod> methods;
   for (const Transfer t : {Transfer::apic, Transfer::pic, Transfer::flip})
-    methods.push_back(method(t, Shape::quadratic, Precision::single));
-  methods.push_back(method(Transfer::apic, Shape::quadratic, Precision::double_));
+    methods.push_back(method(t, Shape::quadratic, Precision::double_));
+  methods.push_back(method(Transfer::apic, Shape::quadratic, Precision::single));
   const std::vector<AccuracyRow> rows = run("vibrating_bar", {0, 1}, methods);
-  for (const VerificationMethod& m : methods) EXPECT_GT(observed_order(rows, m), 0.85) << method_name(m);
-  EXPECT_LT(error_of(rows, 1, methods[0]), 0.0123);
+  EXPECT_GT(observed_order(rows, methods[0]), 1.05);
+  for (int i : {1, 2}) EXPECT_GT(observed_order(rows, methods[i]), 0.85) << method_name(methods[i]);
+  EXPECT_LT(error_of(rows, 1, methods[0]), 5e-4);
   EXPECT_LT(error_of(rows, 1, methods[1]), 0.026);
-  EXPECT_LT(error_of(rows, 1, methods[2]), 0.0123);
-  EXPECT_NEAR(error_of(rows, 1, methods[0]) / error_of(rows, 1, methods[3]), 1.0, 0.05);
+  EXPECT_LT(error_of(rows, 1, methods[2]), 0.0014);
+  EXPECT_LT(error_of(rows, 1, methods[3]), 0.0013);
 }
 
-// Manufactured solution, levels 1-2: APIC is second order with both shape functions (measured 1.88
-// quadratic, 1.97 cubic); PIC's smoothing makes it first order at best (0.82), so it must stay
-// well above APIC.
+// Manufactured solution (sin(2 pi X), stressed clamped ends), levels 1-2: APIC is second order with
+// both shape functions (measured 2.04 quadratic, 2.12 cubic, in float); PIC's smoothing makes it
+// first order at best, so it must stay well above APIC.
 TEST(AccuracyGuard, ManufacturedSolutionIsSecondOrderWithApic) {
   const VerificationMethod quadratic = method(Transfer::apic, Shape::quadratic, Precision::single);
   const VerificationMethod cubic = method(Transfer::apic, Shape::cubic, Precision::single);
   const VerificationMethod pic = method(Transfer::pic, Shape::quadratic, Precision::single);
   const std::vector<AccuracyRow> rows = run("manufactured_solution", {1, 2}, {quadratic, cubic, pic});
-  EXPECT_GT(observed_order(rows, quadratic), 1.8);
-  EXPECT_GT(observed_order(rows, cubic), 1.8);
-  EXPECT_LT(error_of(rows, 2, quadratic), 0.0023);  // measured 0.00202
+  EXPECT_GT(observed_order(rows, quadratic), 1.9);
+  EXPECT_GT(observed_order(rows, cubic), 1.9);
+  EXPECT_LT(error_of(rows, 2, quadratic), 0.0042);  // measured 0.00355
   EXPECT_GT(error_of(rows, 2, pic), 10 * error_of(rows, 2, quadratic));
 }
 

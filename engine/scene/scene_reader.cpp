@@ -581,12 +581,20 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     const WallType all = WallType(r.choice_index("type"));
     const double friction = r.number("friction");
     const int width = int(r.integer("width"));
+    const bool mirror = r.boolean("mirror");
     const char* faces[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
     for (int f = 0; f < 6; ++f) {
       WallType type = all;
       if (r.has(faces[f])) type = WallType(r.choice_index(faces[f]));
       else o.insert_or_assign(faces[f], scene_section("walls").keys[0].choices[std::size_t(all)]);
-      s.config.walls[f] = Wall<double>{type, width, friction};
+      const bool mirrored = mirror && (type == WallType::sticky || type == WallType::slip);
+      if (mirror && type == WallType::separate)
+        r.fail("mirror", std::string("cannot mirror the separating wall on ") + faces[f] +
+                             ": a mirror wall is sticky or slip (set that face to one of them, or to none)");
+      if (mirrored && type == WallType::slip && friction != 0)
+        r.fail("mirror", "a slip mirror wall is a symmetry plane and takes no friction (set friction = 0)");
+      if (mirrored && width < 2) r.fail("mirror", "a mirror wall needs width >= 2: its plane and a row of ghost nodes");
+      s.config.walls[f] = Wall<double>{type, width, friction, mirrored};
     }
     r.finish();
     out.insert("walls", std::move(o));

@@ -98,6 +98,12 @@ std::vector<SectionSpec> build_schema() {
                    {"friction", K::number, Q::dimensionless, "0.0", false, "Coulomb friction coefficient of the walls",
                     0, kInf},
                    {"width", K::integer, Q::dimensionless, "3", false, "wall band thickness in cells", 1, 8},
+                   {"mirror", K::boolean, Q::dimensionless, "false", false,
+                    "impose the sticky and slip faces through mirrored ghost nodes: the band's innermost node row is "
+                    "the wall's plane and the rows beyond it carry the image of the body (slip: its mirror image, a "
+                    "frictionless symmetry plane; sticky: its velocity negated, a clamped plane), so particles next "
+                    "to the wall keep their whole B-spline support and a stressed boundary converges at second "
+                    "order. Faces set to none are left alone; separate faces cannot be mirrored"},
                }});
 
   SectionSpec materials{"materials.NAME", false,
