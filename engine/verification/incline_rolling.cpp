@@ -110,10 +110,24 @@ std::vector<VerificationRow> run_rolling_levels(const std::vector<int>& levels,
 
 }  // namespace
 
-VerificationCase incline_rolling_case(int level, const VerificationMethod& method, const VerificationOptions& options) {
-  const RollingResult r = roll(level, kRollingFactor, method, options);
+namespace {
+
+VerificationCase cylinder_case(int level, double factor, const VerificationMethod& method,
+                               const VerificationOptions& options) {
+  const RollingResult r = roll(level, factor, method, options);
   return {kRadius / (10 << level), kPerCell, r.history.particles, r.history.steps, std::abs(r.acceleration / r.exact - 1),
           r.history.seconds};
+}
+
+}  // namespace
+
+VerificationCase incline_rolling_case(int level, const VerificationMethod& method, const VerificationOptions& options) {
+  return cylinder_case(level, kRollingFactor, method, options);
+}
+
+VerificationCase incline_sliding_cylinder_case(int level, const VerificationMethod& method,
+                                               const VerificationOptions& options) {
+  return cylinder_case(level, kSlidingFactor, method, options);
 }
 
 std::vector<VerificationRow> verify_incline_rolling(const VerificationOptions& options) {

@@ -93,6 +93,10 @@ std::vector<VerificationRow> verify_incline_rolling(const VerificationOptions& o
 std::vector<VerificationRow> verify_incline_rolling_fine(const VerificationOptions& options);
 // The rolling run alone at R / dx = 10 * 2^level; error |a / (2/3 g sin theta) - 1|.
 VerificationCase incline_rolling_case(int level, const VerificationMethod& method, const VerificationOptions& options);
+// The sliding run alone (mu = 0.75 tan(theta) / 3) at R / dx = 10 * 2^level; error
+// |a / (g (sin theta - mu cos theta)) - 1|.
+VerificationCase incline_sliding_cylinder_case(int level, const VerificationMethod& method,
+                                               const VerificationOptions& options);
 
 // Material-point driver (material_driver.hpp) for one constitutive model ("hyperelastic_plastic",
 // "snow_stomakhin", "mooney_rivlin", "snow_cam_clay"): closed forms, yield surface and J_P bookkeeping after every

@@ -27,6 +27,10 @@ const std::vector<AccuracyProblem>& accuracy_problems() {
        "none: the grid contact's patch puts the normal force ahead of the lowest point, a rolling resistance that "
        "shrinks slowly and changes sign (engine/verification/incline_rolling.cpp)",
        {0, 1}, {0}, incline_rolling_case},
+      {"incline_sliding_cylinder", "|a / (g (sin t - mu cos t)) - 1| of the sliding cylinder's acceleration", 0,
+       "none: the same contact patch spins the cylinder less than 2 mu g cos(t) / R, and nodes that stick take friction "
+       "below mu N (engine/verification/incline_rolling.cpp)",
+       {0, 1}, {0}, incline_sliding_cylinder_case},
   };
   return problems;
 }
