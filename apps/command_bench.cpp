@@ -1,11 +1,12 @@
 // firn bench step [--problem NAME] [--steps N] [--threads N] [--backend serial|openmp|cuda]
 //                 [--precision float|double] [--transfer apic|pic|flip] [--domain-scale S]
-//                 [--enable ATTR]... [--idle-materials N] [--energy-budget]
+//                 [--enable ATTR]... [--idle-materials N] [--energy-budget] [--material PRESET]
 // Times the step loop alone (setup excluded) and prints particles, steps,
 // particle_steps_per_second and state_hash, plus backend, threads, seconds and memory. --domain-scale,
 // --enable and --idle-materials add what the problem does not need (empty grid, attributes nobody
 // reads, materials without particles) to measure what skipping them saves (docs/performance.md);
-// --energy-budget keeps the energy budget that `firn run` keeps, to measure its cost.
+// --energy-budget keeps the energy budget that `firn run` keeps, to measure its cost; --material
+// makes the cube of a material preset (a plastic snow times the plastic path).
 // firn bench surface [--particles N] [--threads N] [--repeats N]
 // Times the snow surface reconstruction of a synthetic snow block; prints particles_per_second and
 // checks that the mesh is a closed manifold (outside the timing).
@@ -13,9 +14,11 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
+#include "engine/material_catalog.hpp"
 #include "studies/bench/step_benchmark.hpp"
 #include "studies/bench/surface_benchmark.hpp"
 
@@ -74,6 +77,12 @@ void add_bench_command(CLI::App& app) {
   step->add_option("--idle-materials", opts->idle_materials, "add materials without particles (to measure the skip)")
       ->check(CLI::Range(0, 64))->capture_default_str();
   step->add_flag("--energy-budget", opts->energy_budget, "keep the energy budget, as firn run does (to measure its cost)");
+  std::vector<std::string> presets;
+  for (const MaterialPreset& p : material_presets()) presets.push_back(p.name);
+  step->add_option("--material", opts->material,
+                   "make the cube of a material preset instead of the neo-Hookean solid (e.g. thesis_hard_snow, "
+                   "which yields as it lands: the plastic path)")
+      ->check(CLI::IsMember(presets));
   step->add_option("--domain-scale", opts->domain_scale,
                    "scale the domain box (same particles) to show that cost follows the particles")
       ->check(CLI::Range(1.0, 16.0))->capture_default_str();

@@ -3,12 +3,15 @@
 # particles, float) with, in turn, each thing the problem does not need added back, and the energy
 # budget that `firn run` keeps, run interleaved REPS times; prints each variant's median
 # particle-steps/s, its ratio to the plain problem, bytes per particle and grid memory.
-# Usage: bench/pay_for_use.sh [FIRN] [REPS] [STEPS] [THREADS]
+# EXTRA is passed to every run, e.g. "--material thesis_hard_snow" for the plastic path (with
+# STEPS of 300 or more, so that the cube has landed and yields for most of them).
+# Usage: bench/pay_for_use.sh [FIRN] [REPS] [STEPS] [THREADS] [EXTRA]
 set -euo pipefail
 FIRN=${1:-build/release/firn}
 REPS=${2:-5}
 STEPS=${3:-30}
 THREADS=${4:-2}
+read -r -a extra <<< "${5:-}"
 variants=(
   "plain|"
   "plastic_state|--enable alpha --enable Jp"
@@ -23,7 +26,7 @@ for _ in $(seq "$REPS"); do
   for v in "${variants[@]}"; do
     name=${v%%|*}
     read -r -a args <<< "${v#*|}"
-    "$FIRN" bench step --steps "$STEPS" --threads "$THREADS" "${args[@]}" |
+    "$FIRN" bench step --steps "$STEPS" --threads "$THREADS" "${extra[@]}" "${args[@]}" |
       awk -v name="$name" '{f[$1] = $2} END {print name, f["particle_steps_per_second"], f["bytes_per_particle"], f["grid_memory_mb"]}'
   done
 done | python3 -c '

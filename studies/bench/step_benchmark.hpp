@@ -24,6 +24,7 @@ struct StepBenchmarkOptions {
   std::vector<std::string> enable;  // on_demand attributes to allocate although nothing reads them
   int idle_materials = 0;           // extra materials with no particles
   bool energy_budget = false;       // keep the energy budget, as `firn run` does
+  std::string material;             // a material preset for the cube; empty: the neo-Hookean one
 };
 
 struct StepBenchmarkResult {

@@ -30,7 +30,7 @@ StepBenchmarkResult benchmark_step_in(const StepBenchmarkOptions& o, const Backe
   SimulationConfig config = cube_drop_config(o.domain_scale);
   config.transfer = transfer_named(o.transfer);
   Simulation<T, Backend> sim(config, backend);
-  add_cube_drop_particles(sim);
+  add_cube_drop_particles(sim, o.material.empty() ? cube_drop_material() : preset_material_info(o.material));
   for (int m = 0; m < o.idle_materials; ++m)
     sim.add_material({"idle" + std::to_string(m), "neo_hookean", 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
   for (const std::string& name : o.enable) sim.enable(attribute_named(name));
