@@ -653,21 +653,14 @@ class Simulation {
                             MirrorGhosts<T, kTransfer>{contact_.grid_b.slots(), contact_.grid_b.view(), mirror});
   }
 
-  // A mirror wall is a sticky or frictionless slip wall whose band holds at least the one ghost row
-  // that the quadratic and cubic B-splines of particles on the inner side reach, inside a domain
-  // wider than two bands.
+  // Throws for a mirror wall that cannot be one (kernels/step/mirror_walls.hpp, mirror_wall_error).
   static void check_mirror_walls(const SimulationConfig& config, const int nodes[3]) {
     for (int f = 0; f < 6; ++f) {
       const Wall<double>& w = config.walls[f];
-      if (!w.mirror) continue;
-      const std::string face = std::string(f % 2 ? "+" : "-") + "xyz"[f / 2];
-      if (w.type != WallType::sticky && w.type != WallType::slip)
-        throw std::invalid_argument("the mirror wall on face " + face + " must be sticky or slip");
-      if (w.type == WallType::slip && w.friction != 0)
-        throw std::invalid_argument("the mirror wall on face " + face + " is a symmetry plane: it takes no friction");
-      if (w.width < 2) throw std::invalid_argument("the mirror wall on face " + face + " needs a width of at least 2");
-      if (2 * w.width + 1 > nodes[f / 2])
-        throw std::invalid_argument("the domain is too narrow for the mirror wall on face " + face);
+      const std::string why = w.mirror ? mirror_wall_error(w.type, w.width, w.friction, nodes[f / 2]) : "";
+      if (!why.empty())
+        throw std::invalid_argument("the mirror wall on face " + std::string(f % 2 ? "+" : "-") + "xyz"[f / 2] + ": " +
+                                    why);
     }
   }
 

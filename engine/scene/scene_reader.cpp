@@ -12,6 +12,7 @@
 
 #include "engine/material_catalog.hpp"
 #include "engine/scene/scene_schema.hpp"
+#include "kernels/step/mirror_walls.hpp"
 
 namespace firn {
 namespace {
@@ -587,13 +588,11 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
       WallType type = all;
       if (r.has(faces[f])) type = WallType(r.choice_index(faces[f]));
       else o.insert_or_assign(faces[f], scene_section("walls").keys[0].choices[std::size_t(all)]);
-      const bool mirrored = mirror && (type == WallType::sticky || type == WallType::slip);
-      if (mirror && type == WallType::separate)
-        r.fail("mirror", std::string("cannot mirror the separating wall on ") + faces[f] +
-                             ": a mirror wall is sticky or slip (set that face to one of them, or to none)");
-      if (mirrored && type == WallType::slip && friction != 0)
-        r.fail("mirror", "a slip mirror wall is a symmetry plane and takes no friction (set friction = 0)");
-      if (mirrored && width < 2) r.fail("mirror", "a mirror wall needs width >= 2: its plane and a row of ghost nodes");
+      const bool mirrored = mirror && type != WallType::none;  // faces set to none are left alone
+      const SimulationConfig& c = s.config;
+      const int d = f / 2, nodes = int(std::lround((c.domain_max[d] - c.domain_min[d]) / c.dx)) + 1;
+      const std::string why = mirrored ? mirror_wall_error(type, width, friction, nodes) : "";
+      if (!why.empty()) r.fail("mirror", "cannot mirror the wall on " + std::string(faces[f]) + ": " + why);
       s.config.walls[f] = Wall<double>{type, width, friction, mirrored};
     }
     r.finish();

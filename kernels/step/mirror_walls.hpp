@@ -32,13 +32,14 @@
 //                 the difference dt m_image (S g - g) to the momentum.
 //   MirrorGhosts  after the grid update: every ghost node takes the S-signed velocity (and FLIP
 //                 old velocity) of its inner image, so that G2P reads the extended field.
-// A pass writes only the nodes it reads no other node of (inner nodes in the fold, ghost nodes
-// after the update), so blocks run in any order and give the same bits. Images in blocks that hold
+// Each pass writes only nodes that no other node of the pass reads (inner nodes in the fold, ghost
+// nodes after the update), so blocks run in any order and give the same bits. Images in blocks that hold
 // no particles contribute nothing (their sums are zero).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "kernels/block_window.hpp"
 #include "kernels/boundary_conditions.hpp"
@@ -75,8 +76,20 @@ struct MirrorPlanes {
   }
 };
 
-// The mirror planes of the walls with `mirror` set (sticky or slip without friction: the scene
-// reader checks it).
+// Why a wall with `mirror` set cannot be one, on an axis of `nodes` nodes, or "" if it can: a mirror
+// wall is sticky, or slip without friction (a symmetry plane), whose band holds its plane and at
+// least the one ghost row that the quadratic and cubic B-splines of the particles inside reach,
+// in a domain wider than two bands. (Host only: the scene reader and Simulation ask it.)
+inline std::string mirror_wall_error(WallType type, int width, double friction, int nodes) {
+  if (type != WallType::sticky && type != WallType::slip) return "a mirror wall is sticky or slip";
+  if (type == WallType::slip && friction != 0)
+    return "a slip mirror wall is a symmetry plane and takes no friction (set friction = 0)";
+  if (width < 2) return "a mirror wall needs width >= 2: its plane and a row of ghost nodes";
+  if (2 * width + 1 > nodes) return "the domain is too narrow for two mirror bands of this width";
+  return "";
+}
+
+// The mirror planes of the walls with `mirror` set (mirror_wall_error has passed them).
 template <class T, class U>
 MirrorPlanes<T> mirror_planes(const Wall<U>* walls, const int nodes[3]) {
   MirrorPlanes<T> m;
