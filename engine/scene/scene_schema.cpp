@@ -103,7 +103,8 @@ std::vector<SectionSpec> build_schema() {
                     "the wall's plane and the rows beyond it carry the image of the body (slip: its mirror image, a "
                     "frictionless symmetry plane; sticky: its velocity negated, a clamped plane), so particles next "
                     "to the wall keep their whole B-spline support and a stressed boundary converges at second "
-                    "order. Faces set to none are left alone; separate faces cannot be mirrored"},
+                    "order. Faces set to none are left alone; separate faces cannot be mirrored. Keep colliders out of "
+                    "a mirror band: its ghost nodes' velocities are replaced after the colliders act"},
                }});
 
   SectionSpec materials{"materials.NAME", false,

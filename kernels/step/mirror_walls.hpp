@@ -32,6 +32,8 @@
 //                 the difference dt m_image (S g - g) to the momentum.
 //   MirrorGhosts  after the grid update: every ghost node takes the S-signed velocity (and FLIP
 //                 old velocity) of its inner image, so that G2P reads the extended field.
+// A collider reaching into a band's ghost rows acts on velocities that MirrorGhosts then replaces,
+// so its reaction there is meaningless: scenes keep colliders out of mirror bands (docs/scenes.md).
 // Each pass writes only nodes that no other node of the pass reads (inner nodes in the fold, ghost
 // nodes after the update), so blocks run in any order and give the same bits. Images in blocks that hold
 // no particles contribute nothing (their sums are zero).
