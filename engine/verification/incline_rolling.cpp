@@ -27,9 +27,12 @@
 // of the centre (from the collider's force and torque, in trial runs with a shorter ramp:
 // e = 0.044 R, 0.034 R, 0.018 R at R / dx = 10, 20, 40), a rolling resistance that slows the
 // rolling cylinder by about (e / R) cot(theta) and spins the sliding one less than
-// 2 mu g cos(theta) / R. Against it, the rolling cylinder slips 5-7% and the sliding one feels less
-// friction than mu N (some contact nodes stick, |v_t| < mu |v_n|), which speed them up. Measured errors (README.md, "firn verify"): rolling -1.3%,
-// +0.8%, +1.9% and sliding 2.2%, 3.5%, 4.4% at R / dx = 10, 20, 40: not converging. The bounds are
+// 2 mu g cos(theta) / R. Against it, the rolling cylinder slips 5-7% (most of its contact nodes
+// stick, one cell inside the ground, where its extrapolated velocity moves backward at omega dx)
+// and the sliding one feels less friction than mu N (the slip walls in z act after the ground and
+// remove the share of the friction spent on v_z; docs/contact.md), which speed them up. Measured
+// errors (README.md, "firn verify"): rolling -1.3%, +0.8%, +1.9% and sliding 2.2%, 3.5%, 4.4% at
+// R / dx = 10, 20, 40: not converging. The bounds are
 // therefore not proven: 2% at R / dx = 40 is issue 5's requirement, 5% and 3% at the coarser
 // levels and 5% on the sliding acceleration are the measured errors with a margin.
 #include <cmath>
@@ -107,10 +110,6 @@ std::vector<VerificationRow> run_rolling_levels(const std::vector<int>& levels,
   }
   return rows;
 }
-
-}  // namespace
-
-namespace {
 
 VerificationCase cylinder_case(int level, double factor, const VerificationMethod& method,
                                const VerificationOptions& options) {
