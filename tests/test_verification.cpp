@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/materials.hpp"
+#include "engine/verification/incline.hpp"
 #include "engine/verification/least_squares.hpp"
 #include "engine/verification/verification.hpp"
 
@@ -42,6 +44,38 @@ TEST(Verification, RollingCylinderRollsInFloatAsInDouble) {
   EXPECT_LT(f.error, 0.02);
   EXPECT_LT(d.error, 0.02);
   EXPECT_NEAR(f.error, d.error, 0.002);
+}
+
+// The ground's force and moment that the incline problems log (incline.hpp), on a block sliding
+// down 30 degrees with mu = 0.3 (incline_sliding's set-up at dx = 0.02): the normal force carries
+// m g cos(theta), the friction is mu times it, and, as the block does not turn, the ground's
+// moment about its centre of mass vanishes, so about the ground point below it the moment is the
+// friction's, mu N h / 2 (h the block's height): the normal force acts mu h / 2 ahead.
+TEST(Verification, InclineGroundForceAndMomentOfASlidingBlock) {
+  InclineRun run;
+  run.angle = M_PI / 6;
+  run.mu = 0.3;
+  run.dx = 0.02;
+  run.material = {"block", "neo_hookean", 1000, ElasticModuli::from_E_nu(1e7, 0.3)};
+  const double width = 0.2, height = 0.05;
+  run.body_max = {width, height, 0};
+  run.inside = [](const Point&) { return true; };
+  run.travel = 0.1;
+  run.ramp = 0.02;
+  run.end_time = 0.2;
+  const InclineHistory h = run_incline(run, {});
+  const double t0 = 0.05, t1 = run.end_time;
+  const double mass = 1000 * width * height * run.dx;  // a slab one cell thick
+  const double normal = window_mean(h.time, h.normal_force, t0, t1);
+  EXPECT_NEAR(normal / (mass * kInclineGravity * std::cos(run.angle)), 1, 0.005);  // 0.9998
+  EXPECT_NEAR(-window_mean(h.time, h.ground_force, t0, t1) / normal, run.mu, 0.001);  // 0.2996
+  EXPECT_NEAR(window_mean(h.time, h.ground_moment, t0, t1) / normal, run.mu * height / 2, 0.05 * run.mu * height / 2);  // 0.98 of it
+}
+
+TEST(LeastSquares, TheWindowMeanAveragesTheWindowOnly) {
+  const std::vector<double> t = {0, 1, 2, 3}, y = {5, 1, 3, 100};
+  EXPECT_DOUBLE_EQ(window_mean(t, y, 1, 2), 2);
+  EXPECT_TRUE(std::isnan(window_mean(t, y, 4, 5)));
 }
 
 TEST(LeastSquaresSlope, RecoversALineInsideTheWindowOnly) {

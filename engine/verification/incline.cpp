@@ -10,12 +10,12 @@ namespace firn {
 
 namespace {
 
-// Centre-of-mass velocity along x and the rigid angular velocity about z that fits the particle
-// velocities best in the mass-weighted least-squares sense:
+// Centre of mass x_com (x and y), its velocity along x and the rigid angular velocity about z that
+// fits the particle velocities best in the mass-weighted least-squares sense:
 //   omega_z = sum m (r_x v_y - r_y v_x) / sum m (r_x^2 + r_y^2),  r = x - x_com,
 // i.e. the angular momentum about the centre of mass over the moment of inertia (plane motion).
 template <class T>
-void planar_motion(const ParticleView<T>& pv, double& velocity_x, double& omega_z) {
+void planar_motion(const ParticleView<T>& pv, double x_com[2], double& velocity_x, double& omega_z) {
   double m = 0, x[2] = {0, 0}, v = 0;
   for (std::size_t p = 0; p < pv.n; ++p) {
     const double mp = pv.mass[p];
@@ -34,6 +34,8 @@ void planar_motion(const ParticleView<T>& pv, double& velocity_x, double& omega_
   }
   velocity_x = v / m;
   omega_z = angular / inertia;
+  x_com[0] = x[0];
+  x_com[1] = x[1];
 }
 
 template <class T, class Backend>
@@ -77,11 +79,17 @@ InclineHistory run_incline_in(const InclineRun& run, const Backend& backend) {
       pv.body_accel[1][p] = T(ease * g[1]);
     }
     sim.step(dt);
-    double v = 0, omega_z = 0;
-    planar_motion(sim.particles(), v, omega_z);
+    double v = 0, omega_z = 0, com[2];
+    planar_motion(sim.particles(), com, v, omega_z);
     history.time.push_back(sim.time());
     history.velocity.push_back(v);
     history.spin.push_back(-omega_z);
+    // The ground's reaction F and torque tau about the world origin, on the collider; on the body
+    // -F, and about the ground point p = (x_com, 0): -(tau_z - (p_x F_y - p_y F_x)).
+    const ColliderBody& g = sim.collider(0);
+    history.ground_force.push_back(-g.force[0]);
+    history.normal_force.push_back(-g.force[1]);
+    history.ground_moment.push_back(-(g.torque[2] - com[0] * g.force[1]));
   }
   history.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   history.steps = sim.steps();

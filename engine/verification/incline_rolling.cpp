@@ -81,10 +81,16 @@ RollingResult roll(int level, double factor, const VerificationMethod& method, c
   r.history = run_incline(run, options);
   r.acceleration = least_squares_slope(r.history.time, r.history.velocity, kFitStart, run.end_time);
   r.slip = 1 - least_squares_slope(r.history.time, r.history.spin, kFitStart, run.end_time) * kRadius / r.acceleration;
-  if (options.log)
+  if (options.log) {
+    const InclineHistory& h = r.history;
+    const double normal = window_mean(h.time, h.normal_force, kFitStart, run.end_time);
     *options.log << "incline_rolling R/dx " << (10 << level) << " mu " << run.mu << " " << method_name(method) << ": a "
                  << r.acceleration << " m/s^2 (exact " << r.exact << "), slip ratio " << r.slip << " (exact "
-                 << (factor >= 1 ? 0.0 : 1.0 / 3) << ")\n";
+                 << (factor >= 1 ? 0.0 : 1.0 / 3) << "); friction up the slope / normal force "
+                 << -window_mean(h.time, h.ground_force, kFitStart, run.end_time) / normal << ", normal force's lever arm "
+                 << window_mean(h.time, h.ground_moment, kFitStart, run.end_time) / normal / kRadius
+                 << " R ahead of the centre\n";
+  }
   return r;
 }
 

@@ -1,6 +1,7 @@
-// Least-squares straight-line fit y = a + b t: the slope b = cov(t, y) / var(t) over the samples
-// with t0 <= t <= t1 (the normal equations of the fit, e.g. Press et al., Numerical Recipes,
-// section 15.2). NaN when fewer than two distinct times fall in the window.
+// Least-squares fits over the samples with t0 <= t <= t1: a constant (the window's mean) and a
+// straight line y = a + b t, whose slope is b = cov(t, y) / var(t) (the normal equations of the
+// fit, e.g. Press et al., Numerical Recipes, section 15.2). NaN when the window holds no sample
+// (the mean) or fewer than two distinct times (the slope).
 #pragma once
 
 #include <cmath>
@@ -9,17 +10,18 @@
 
 namespace firn {
 
-inline double least_squares_slope(const std::vector<double>& t, const std::vector<double>& y, double t0, double t1) {
-  double n = 0, mean_t = 0, mean_y = 0;
+inline double window_mean(const std::vector<double>& t, const std::vector<double>& y, double t0, double t1) {
+  double n = 0, sum = 0;
   for (std::size_t i = 0; i < t.size(); ++i)
     if (t[i] >= t0 && t[i] <= t1) {
       n += 1;
-      mean_t += t[i];
-      mean_y += y[i];
+      sum += y[i];
     }
-  if (n < 2) return NAN;
-  mean_t /= n;
-  mean_y /= n;
+  return n > 0 ? sum / n : NAN;
+}
+
+inline double least_squares_slope(const std::vector<double>& t, const std::vector<double>& y, double t0, double t1) {
+  const double mean_t = window_mean(t, t, t0, t1), mean_y = window_mean(t, y, t0, t1);
   double cov = 0, var = 0;
   for (std::size_t i = 0; i < t.size(); ++i)
     if (t[i] >= t0 && t[i] <= t1) {
