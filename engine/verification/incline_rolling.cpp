@@ -32,9 +32,10 @@
 // and the sliding one feels less friction than mu N (the slip walls in z act after the ground and
 // remove the share of the friction spent on v_z; docs/contact.md), which speed them up. Measured
 // errors (README.md, "firn verify"): rolling -1.3%, +0.8%, +1.9% and sliding 2.2%, 3.5%, 4.4% at
-// R / dx = 10, 20, 40: not converging. The bounds are
-// therefore not proven: 2% at R / dx = 40 is issue 5's requirement, 5% and 3% at the coarser
-// levels and 5% on the sliding acceleration are the measured errors with a margin.
+// R / dx = 10, 20, 40: not converging. The bounds are therefore not proven: 2% at R / dx = 40 is
+// issue 5's requirement, 5% and 3% at the coarser levels and 5% on the sliding acceleration are
+// the measured errors with a margin. The log gives, per run, the ground's friction over its normal
+// force and the normal force's lever arm.
 #include <cmath>
 
 #include "engine/verification/incline.hpp"
