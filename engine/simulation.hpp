@@ -77,6 +77,8 @@ struct SimulationConfig {
   std::array<Wall<double>, 6> walls = {{{WallType::separate, 3, 0}, {WallType::separate, 3, 0},
                                         {WallType::separate, 3, 0}, {WallType::separate, 3, 0},
                                         {WallType::separate, 3, 0}, {WallType::separate, 3, 0}}};
+  // Grid nodes along axis d: the domain's length in cells, plus one.
+  int nodes(int d) const { return int(std::lround((domain_max[d] - domain_min[d]) / dx)) + 1; }
 };
 
 struct Diagnostics {
@@ -122,7 +124,7 @@ class Simulation {
     for (int d = 0; d < 3; ++d) {
       if (!(config.domain_max[d] > config.domain_min[d])) throw std::invalid_argument("empty domain");
       g.origin[d] = T(config.domain_min[d]);
-      g.nodes[d] = int(std::lround((config.domain_max[d] - config.domain_min[d]) / config.dx)) + 1;
+      g.nodes[d] = config.nodes(d);
     }
     g.dx = T(config.dx);
     g.inv_dx = T(1 / config.dx);

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/materials.hpp"
 #include "engine/verification/incline.hpp"
 #include "engine/verification/least_squares.hpp"
 #include "engine/verification/verification.hpp"
@@ -52,17 +51,8 @@ TEST(Verification, RollingCylinderRollsInFloatAsInDouble) {
 // moment about its centre of mass vanishes, so about the ground point below it the moment is the
 // friction's, mu N h / 2 (h the block's height): the normal force acts mu h / 2 ahead.
 TEST(Verification, InclineGroundForceAndMomentOfASlidingBlock) {
-  InclineRun run;
-  run.angle = M_PI / 6;
-  run.mu = 0.3;
-  run.dx = 0.02;
-  run.material = {"block", "neo_hookean", 1000, ElasticModuli::from_E_nu(1e7, 0.3)};
-  const double width = 0.2, height = 0.05;
-  run.body_max = {width, height, 0};
-  run.inside = [](const Point&) { return true; };
-  run.travel = 0.1;
-  run.ramp = 0.02;
-  run.end_time = 0.2;
+  const InclineRun run = incline_sliding_block(0, {});
+  const double width = run.body_max[0], height = run.body_max[1];
   const InclineHistory h = run_incline(run, {});
   const double t0 = 0.05, t1 = run.end_time;
   const double mass = 1000 * width * height * run.dx;  // a slab one cell thick

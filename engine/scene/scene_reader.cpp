@@ -589,9 +589,7 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
       if (r.has(faces[f])) type = WallType(r.choice_index(faces[f]));
       else o.insert_or_assign(faces[f], scene_section("walls").keys[0].choices[std::size_t(all)]);
       const bool mirrored = mirror && type != WallType::none;  // faces set to none are left alone
-      const SimulationConfig& c = s.config;
-      const int d = f / 2, nodes = int(std::lround((c.domain_max[d] - c.domain_min[d]) / c.dx)) + 1;
-      const std::string why = mirrored ? mirror_wall_error(type, width, friction, nodes) : "";
+      const std::string why = mirrored ? mirror_wall_error(type, width, friction, s.config.nodes(f / 2)) : "";
       if (!why.empty()) r.fail("mirror", "cannot mirror the wall on " + std::string(faces[f]) + ": " + why);
       s.config.walls[f] = Wall<double>{type, width, friction, mirrored};
     }

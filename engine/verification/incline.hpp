@@ -52,6 +52,10 @@ struct InclineHistory {
 
 InclineHistory run_incline(const InclineRun& run, const VerificationOptions& options);
 
+// The sliding block of incline_sliding.cpp at dx = 0.02 / 2^level: 0.2 m by 0.05 m on 30 degrees,
+// mu = 0.3.
+InclineRun incline_sliding_block(int level, const VerificationMethod& method);
+
 // g0 = 9.81 m/s^2.
 constexpr double kInclineGravity = 9.81;
 

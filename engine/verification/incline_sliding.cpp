@@ -23,9 +23,8 @@
 #include "engine/verification/verification.hpp"
 
 namespace firn {
-namespace {
 
-InclineRun sliding_block(int level, const VerificationMethod& method) {
+InclineRun incline_sliding_block(int level, const VerificationMethod& method) {
   InclineRun run;
   run.angle = M_PI / 6;
   run.mu = 0.3;
@@ -41,6 +40,8 @@ InclineRun sliding_block(int level, const VerificationMethod& method) {
   return run;
 }
 
+namespace {
+
 constexpr double kFitStart = 0.05;
 
 double exact_acceleration(const InclineRun& run) {
@@ -50,7 +51,7 @@ double exact_acceleration(const InclineRun& run) {
 }  // namespace
 
 VerificationCase incline_sliding_case(int level, const VerificationMethod& method, const VerificationOptions& options) {
-  const InclineRun run = sliding_block(level, method);
+  const InclineRun run = incline_sliding_block(level, method);
   const InclineHistory h = run_incline(run, options);
   const double a = least_squares_slope(h.time, h.velocity, kFitStart, run.end_time);
   if (options.log)

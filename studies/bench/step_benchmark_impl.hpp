@@ -31,8 +31,11 @@ StepBenchmarkResult benchmark_step_in(const StepBenchmarkOptions& o, const Backe
   config.transfer = transfer_named(o.transfer);
   Simulation<T, Backend> sim(config, backend);
   add_cube_drop_particles(sim, o.material.empty() ? cube_drop_material() : preset_material_info(o.material));
-  for (int m = 0; m < o.idle_materials; ++m)
-    sim.add_material({"idle" + std::to_string(m), "neo_hookean", 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
+  for (int m = 0; m < o.idle_materials; ++m) {
+    MaterialInfo idle = cube_drop_material();
+    idle.name = "idle" + std::to_string(m);
+    sim.add_material(idle);
+  }
   for (const std::string& name : o.enable) sim.enable(attribute_named(name));
   if (o.energy_budget) sim.enable_energy_budget();
   sim.prepare();
