@@ -1,19 +1,22 @@
 // firn bench step [--problem NAME] [--steps N] [--threads N] [--backend serial|openmp|cuda]
 //                 [--precision float|double] [--transfer apic|pic|flip] [--domain-scale S]
-//                 [--enable ATTR]... [--idle-materials N] [--energy-budget] [--material PRESET]
+//                 [--enable ATTR]... [--idle-materials N] [--energy-budget] [--material PRESET] [--profile]
 // Times the step loop alone (setup excluded) and prints particles, steps,
 // particle_steps_per_second and state_hash, plus backend, threads, seconds and memory. --domain-scale,
 // --enable and --idle-materials add what the problem does not need (empty grid, attributes nobody
 // reads, materials without particles) to measure what skipping them saves (docs/performance.md);
 // --energy-budget keeps the energy budget that `firn run` keeps, to measure its cost; --material
-// makes the cube of a material preset (a plastic snow times the plastic path).
+// makes the cube of a material preset (a plastic snow times the plastic path); --profile prints each
+// launch's time per step and the time outside launches (host work).
 // firn bench surface [--particles N] [--threads N] [--repeats N]
 // Times the snow surface reconstruction of a synthetic snow block; prints particles_per_second and
 // checks that the mesh is a closed manifold (outside the timing).
+#include <algorithm>
 #include <cinttypes>
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "apps/backend_option.hpp"
@@ -35,6 +38,17 @@ void print_step_benchmark(const bench::StepBenchmarkOptions& o) {
               r.bytes_per_particle, o.steps, r.seconds);
   std::printf("grid_blocks_active %zu\ngrid_memory_mb %.2f\n", r.grid_blocks_active, r.grid_memory_bytes / 1048576.0);
   std::printf("particle_steps_per_second %.0f\nstate_hash %016" PRIx64 "\n", r.particle_steps_per_second, r.state_hash);
+  if (!o.profile) return;
+  // Launch names with their time per step, most expensive first; what is left is host work.
+  std::vector<std::pair<std::string, backend::LaunchProfile::Entry>> launches(r.launches.begin(), r.launches.end());
+  std::sort(launches.begin(), launches.end(), [](const auto& a, const auto& b) { return a.second.seconds > b.second.seconds; });
+  double in_launches = 0;
+  for (const auto& [name, e] : launches) {
+    std::printf("launch %-32s %10.4f ms/step %8.1f launches/step\n", name.c_str(), 1e3 * e.seconds / o.steps,
+                double(e.launches) / o.steps);
+    in_launches += e.seconds;
+  }
+  std::printf("launch %-32s %10.4f ms/step\n", "(outside launches)", 1e3 * (r.seconds - in_launches) / o.steps);
 }
 
 void print_surface_benchmark(const bench::SurfaceBenchmarkOptions& o) {
@@ -86,6 +100,8 @@ void add_bench_command(CLI::App& app) {
   step->add_option("--domain-scale", opts->domain_scale,
                    "scale the domain box (same particles) to show that cost follows the particles")
       ->check(CLI::Range(1.0, 16.0))->capture_default_str();
+  step->add_flag("--profile", opts->profile,
+                 "time every launch and print the time per step of each (the profiling adds its own cost to seconds)");
   add_backend_option(step, step_opts->backend);
   step->callback([step_opts]() {
     const std::optional<BackendKind> backend = usable_backend(step_opts->backend);

@@ -1,4 +1,4 @@
-// firn run SCENE [--out DIR] [--set KEY=VALUE]... [--threads N] [--backend serial|openmp|cuda] [--preview]
+// firn run SCENE [--out DIR] [--set KEY=VALUE]... [--threads N] [--backend serial|openmp|cuda] [--preview] [--profile]
 //                [--render none|spheres|surface] [--video] [--mesh] [--gl egl|osmesa] [--checkpoint-every TIME]
 //                [--report]
 // firn run --resume DIR [--threads N] [--backend ...] [--render ...] [--video] [--mesh] [--gl ...]
@@ -13,6 +13,7 @@
 // Exit status: 0 completed, 1 unstable or failed, 2 bad scene, options or checkpoint, 130 interrupted.
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -20,6 +21,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "apps/backend_option.hpp"
@@ -68,6 +70,19 @@ class ProgressLine {
   bool drawn_ = false;
 };
 
+// The step loop's costliest launches (--profile) and its time outside launches (host work),
+// per step of a run that did not resume.
+void print_launches(const RunSummary& s) {
+  std::vector<std::pair<std::string, double>> launches(s.launch_seconds.begin(), s.launch_seconds.end());
+  std::sort(launches.begin(), launches.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+  double in_launches = 0;
+  for (const auto& launch : launches) in_launches += launch.second;
+  const double per_step = s.steps > 0 ? 1e3 / double(s.steps) : 0;
+  for (std::size_t i = 0; i < launches.size() && i < 12; ++i)
+    std::printf("  %-32s %9.3f ms/step\n", launches[i].first.c_str(), launches[i].second * per_step);
+  std::printf("  %-32s %9.3f ms/step\n", "(outside launches)", (s.step_seconds - in_launches) * per_step);
+}
+
 // A run whose summary.json says it finished.
 bool finished_run(const std::string& out_dir) {
   const std::optional<std::string> summary = sweep::file_text(out_dir + "/summary.json");
@@ -81,7 +96,7 @@ void add_run_command(CLI::App& app) {
     std::string scene, out, render = "none", gl, backend = "openmp", resume, checkpoint_every;
     std::vector<std::string> sets;
     int threads = 0;
-    bool preview = false, video = false, mesh = false, report = false;
+    bool preview = false, video = false, mesh = false, report = false, profile = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App* run = app.add_subcommand("run", "run a scene and write its outputs");
@@ -101,6 +116,8 @@ void add_run_command(CLI::App& app) {
   run->add_flag("--mesh", o->mesh, "write reconstructed surfaces to meshes/NNNNN.ply");
   run->add_option("--gl", o->gl, "OpenGL context: egl or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
   run->add_flag("--report", o->report, "write DIR/report.html (firn report DIR) when the run ends");
+  run->add_flag("--profile", o->profile,
+                "time every launch of the step; print the costliest and write all to summary.json (launch_seconds)");
   run->callback([o]() {
     auto refuse = [](const std::string& why) {
       std::fprintf(stderr, "firn run: %s\n", why.c_str());
@@ -141,6 +158,7 @@ void add_run_command(CLI::App& app) {
     options.resume = resume;
     options.backend = *backend;
     options.threads = o->threads;
+    options.profile = o->profile;
     options.interrupt = &g_interrupted;
     viz::RunRendering rendering;
     if (o->render != "none") {
@@ -209,6 +227,7 @@ void add_run_command(CLI::App& app) {
     std::printf("%s: ok, %zu particles, %ld steps, %.1f s (%.3g particle-steps/s on %s, %d threads), outputs in %s\n",
                 scene.spec.name.c_str(), s.particles, s.steps, s.wall_seconds, s.particle_steps_per_second(),
                 s.backend.c_str(), s.threads, options.out_dir.c_str());
+    if (o->profile && !resume) print_launches(s);
     if (rendering.finish)
       std::printf("frames in %s/frames%s (%s)\n", options.out_dir.c_str(), o->video ? ", video.mp4" : "",
                   rendering.description.c_str());

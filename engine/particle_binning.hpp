@@ -67,10 +67,25 @@ class ParticleBinning {
     return first_bad;
   }
 
-  // Stable counting sort of the keys: order, bucket ranges, particle blocks and their colouring.
+  // Stable sort of the keys (on the device where the backend brings its own sort), then the
+  // particle blocks and their colouring.
   template <class Backend>
   void sort(const int blocks[3], const Backend& backend) {
     const std::size_t n = keys_.size(), K = material_count_ * block_count_;
+    if constexpr (sorts_on_device<Backend>(0)) {
+      order_.resize(n);
+      bucket_begin_.resize(K + 1);
+      backend.sort_into_buckets(keys_.data(), n, K, order_.data(), bucket_begin_.data());
+    } else {
+      counting_sort(n, K, backend);
+    }
+    collect_blocks(blocks);
+  }
+
+  // The CPU's stable counting sort in backend.threads() parts: order and bucket ranges (public, as
+  // nvcc's extended lambdas cannot sit in private members).
+  template <class Backend>
+  void counting_sort(std::size_t n, std::size_t K, const Backend& backend) {
     const std::size_t parts = std::size_t(backend.threads());
     counts_.assign(parts * K, 0);
     const std::uint32_t* keys = keys_.data();
@@ -96,7 +111,6 @@ class ParticleBinning {
     backend.parallel_for("bin.scatter", parts, [=] FIRN_HD_LAMBDA(std::size_t t) {
       for (std::size_t p = t * n / parts; p < (t + 1) * n / parts; ++p) order[counts[t * K + keys[p]]++] = std::uint32_t(p);
     });
-    collect_blocks(blocks);
   }
 
   // True when walking the particles in block order jumps around memory often enough that
@@ -124,7 +138,7 @@ class ParticleBinning {
   // The order and the buckets of sorted positions per (non-empty material, block), for kernels.
   BinningView view() const { return BinningView{order_.data(), bucket_begin_.data(), block_count_, material_count_}; }
   // Blocks holding particles, in increasing id, and the same grouped by parity colour.
-  const std::vector<std::uint32_t>& particle_blocks() const { return particle_blocks_; }
+  const AlignedVector<std::uint32_t>& particle_blocks() const { return particle_blocks_; }
   backend::BlockColouring colouring() const {
     backend::BlockColouring c;
     c.blocks = coloured_.data();
@@ -133,6 +147,14 @@ class ParticleBinning {
   }
 
  private:
+  // Whether the backend sorts on the device (backend::Cuda::sort_into_buckets).
+  template <class Backend>
+  static constexpr auto sorts_on_device(int) -> decltype(&Backend::sort_into_buckets, bool()) {
+    return true;
+  }
+  template <class Backend>
+  static constexpr bool sorts_on_device(long) { return false; }
+
   void collect_blocks(const int blocks[3]) {
     particle_blocks_.clear();
     std::size_t per_colour[backend::BlockColouring::kColours] = {};
@@ -157,9 +179,7 @@ class ParticleBinning {
   }
 
   std::size_t block_count_ = 0, material_count_ = 0;
-  AlignedVector<std::uint32_t> keys_, order_;
-  std::vector<std::uint32_t> counts_, bucket_begin_;
-  std::vector<std::uint32_t> particle_blocks_, coloured_;
+  AlignedVector<std::uint32_t> keys_, order_, counts_, bucket_begin_, particle_blocks_, coloured_;
   std::size_t colour_begin_[backend::BlockColouring::kColours + 1] = {};
 };
 

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #include "engine/aligned_vector.hpp"
@@ -120,18 +121,28 @@ class ParticleStorage {
     dst = src[0].empty() ? nullptr : src[0].data();
   }
 
+  // Gathers into the spare column of S's type, then swaps: the spare then holds the old column, for
+  // the next column. No allocation (but when particles were added), so the bytes stay where the
+  // backend put them: a fresh buffer each time would be zeroed by the host and, in device memory,
+  // move to the host and back.
   template <class S, class Backend>
-  static void gather_column(AlignedVector<S>& col, const std::uint32_t* order, std::size_t count, const Backend& backend) {
-    AlignedVector<S> out(count);
-    S* o = out.data();
-    const S* in = col.data();
-    backend.parallel_for("particles.gather", count, GatherCopy<S>{o, in, order});
-    col.swap(out);
+  void gather_column(AlignedVector<S>& col, const std::uint32_t* order, std::size_t count, const Backend& backend) {
+    AlignedVector<S>& spare = spare_column<S>();
+    spare.resize(count);
+    backend.parallel_for("particles.gather", count, GatherCopy<S>{spare.data(), col.data(), order});
+    col.swap(spare);
+  }
+  template <class S>
+  AlignedVector<S>& spare_column() {
+    if constexpr (std::is_same_v<S, T>) return spare_real_;
+    else return spare_index_;
   }
 
 #define FIRN_STORAGE_MEMBER(name, n, kind, alloc, doc) AlignedVector<FIRN_SCALAR_##kind(T)> name##_[n];
   FIRN_PARTICLE_ATTRIBUTES(FIRN_STORAGE_MEMBER)
 #undef FIRN_STORAGE_MEMBER
+  AlignedVector<T> spare_real_;
+  AlignedVector<std::uint32_t> spare_index_;
   bool enabled_[int(Attribute::count)] = {};
   std::size_t size_ = 0;
 };

@@ -210,7 +210,7 @@ class Simulation {
         "particles.count_removed", pv.n, std::size_t(0),
         [=] FIRN_HD_LAMBDA(std::size_t p, std::size_t& acc) { acc += remove(pv, p) ? 1 : 0; }, Sum{});
     if (doomed == 0) return 0;
-    std::vector<std::uint32_t> keep;
+    AlignedVector<std::uint32_t> keep;
     keep.reserve(pv.n - doomed);
     for (auto& m : materials_) {
       const std::size_t begin = keep.size();
@@ -288,7 +288,7 @@ class Simulation {
   // the first step; call it yourself to read particles in their final layout before stepping.
   void prepare() {
     if (prepared_) return;
-    std::vector<std::uint32_t> order;
+    AlignedVector<std::uint32_t> order;
     order.reserve(storage_.size());
     for (std::size_t m = 0; m < materials_.size(); ++m) {
       materials_[m].range.begin = order.size();
@@ -541,7 +541,7 @@ class Simulation {
       const GridGeometry<T> g = grid_.geometry();
       backend_.scatter_blocks("volume_average.p2g", binning_.colouring(),
                               VolumeScatter<T, ShapeT>{pv, gv, bins, g, averaged});
-      const std::vector<std::uint32_t>& blocks = binning_.particle_blocks();
+      const AlignedVector<std::uint32_t>& blocks = binning_.particle_blocks();
       backend_.gather_blocks("volume_average.g2p", blocks.data(), blocks.size(),
                              VolumeGather<T, ShapeT>{pv, gv, bins, g, averaged}, Sum{});
       grid_.clear(backend_);
@@ -606,10 +606,10 @@ class Simulation {
     const MirrorPlanes<T> mirror = mirror_planes<T>(config_.walls.data(), g.nodes);
     if (mirror.any()) fold_mirror_images<kTransfer>(mirror, dt, contact);
     pose_colliders(dt, contact);
-    backend_.parallel_for("grid_update", grid_.active_count(), GridUpdateSlots<T, kTransfer>{grid_.slots(), &grid_params_});
+    backend_.parallel_for("grid_update", grid_.active_count(), GridUpdateSlots<T, kTransfer>{grid_.slots(), &grid_params_[0]});
     if (contact) {
       backend_.parallel_for("grid_update", grid_.active_count(),
-                            GridUpdateSlots<T, kTransfer>{contact_.grid_b.slots(), &contact_.params_b});
+                            GridUpdateSlots<T, kTransfer>{contact_.grid_b.slots(), &grid_params_[1]});
       const Friction<T> friction{contact_.friction.law, T(contact_.friction.mu)};
       backend_.parallel_for("contact", grid_.active_count(),
                             ContactUpdateSlots<T, kTransfer>{grid_.slots(), contact_.grid_b.slots(),
@@ -619,7 +619,7 @@ class Simulation {
     if (mirror.any()) set_mirror_ghosts<kTransfer>(mirror, contact);
     collect_reactions(double(dt), contact);
     if (budget_enabled_) collect_work(contact);
-    const std::vector<std::uint32_t>& blocks = binning_.particle_blocks();
+    const AlignedVector<std::uint32_t>& blocks = binning_.particle_blocks();
     GuardSummary<T> guard =
         backend_.gather_blocks("g2p", blocks.data(), blocks.size(),
                                G2PGather<T, ShapeT, kTransfer>{pv, gv, bins, g, dt, T(config_.flip_alpha)}, MergeGuard{});
@@ -722,7 +722,7 @@ class Simulation {
   // are summed per block, then over blocks in slot order (the same sums for any thread count).
   void pose_colliders(T dt, bool contact) {
     const GridGeometry<T> g = grid_.geometry();
-    GridUpdateParams<T>& up = grid_params_;
+    GridUpdateParams<T>& up = grid_params_[0];
     up.dt = dt;
     up.dx = g.dx;
     up.min_mass = min_node_mass_;
@@ -756,7 +756,7 @@ class Simulation {
     }
     if (!contact) return;
     // Group B's grid update: the same colliders and walls, its own per-block sums.
-    GridUpdateParams<T>& b = contact_.params_b;
+    GridUpdateParams<T>& b = grid_params_[1];
     b = up;
     contact_.reactions_b.assign(reactions_.size(), T(0));
     b.reactions = contact_.reactions_b.data();
@@ -853,7 +853,7 @@ class Simulation {
     const bool pressurised = pressure_.value != 0 && storage_.has(Attribute::area0);
     if (loads_.empty() && !pressurised) return;
     bool changed = false;
-    std::vector<T> accel(3 * (loads_.size() + 1), T(0));
+    AlignedVector<T> accel(3 * (loads_.size() + 1), T(0));
     for (std::size_t k = 0; k < loads_.size(); ++k) {
       Load& l = loads_[k];
       const double f = ramp_factor(t, l.ramp_time);
@@ -896,13 +896,15 @@ class Simulation {
   ParticleStorage<T> storage_;
   std::vector<Material> materials_;
   std::vector<ColliderBody> colliders_;
-  GridUpdateParams<T> grid_params_{};  // of the last grid update
-  std::vector<T> reactions_;           // [slot][collider][6] of the last grid update
+  // The last grid update's parameters: [0] the grid's, [1] contact group B's (a buffer, as kernels
+  // read them through a pointer).
+  AlignedVector<GridUpdateParams<T>> grid_params_ = AlignedVector<GridUpdateParams<T>>(2);
+  AlignedVector<T> reactions_;  // [slot][collider][6] of the last grid update
   int footprint_collider_ = -1;
-  std::vector<T> footprint_blocks_;  // [slot][16]
+  AlignedVector<T> footprint_blocks_;  // [slot][16]
   bool budget_enabled_ = false;
   EnergyBudget budget_;
-  std::vector<T> work_;  // [slot][kWorkKinds] of the last grid update
+  AlignedVector<T> work_;  // [slot][kWorkKinds] of the last grid update
   FootprintMap footprint_;
   std::vector<Load> loads_;
   struct Pressure {
@@ -916,8 +918,7 @@ class Simulation {
     std::vector<int> group;  // per material: 0 or 1 (missing: 0)
     Friction<double> friction{};
     SparseGrid<T> grid_b, normals;
-    GridUpdateParams<T> params_b{};
-    std::vector<T> reactions_b, work_b, footprint_b;
+    AlignedVector<T> reactions_b, work_b, footprint_b;
   } contact_;
   ParticleBinning binning_;
   T max_speed_ = T(0);

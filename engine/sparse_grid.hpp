@@ -5,7 +5,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 #include "engine/aligned_vector.hpp"
 #include "kernels/block_window.hpp"
@@ -40,7 +39,7 @@ class SparseGrid {
   // Activates blocks b + {0,1}^3 of every particle block (ids in increasing order) and zeroes them.
   // Slots are numbered in that order, so the layout does not depend on the thread count.
   template <class Backend>
-  void activate(const std::vector<std::uint32_t>& particle_blocks, const Backend& backend) {
+  void activate(const AlignedVector<std::uint32_t>& particle_blocks, const Backend& backend) {
     for (std::uint32_t id : slots_) map_[id] = -1;
     slots_.clear();
     const int syz = blocks_[1] * blocks_[2];
@@ -85,10 +84,10 @@ class SparseGrid {
   GridGeometry<T> geometry_{};
   int channels_ = 0;
   int blocks_[3] = {0, 0, 0};
-  std::vector<std::int32_t> map_;     // block id -> slot, -1 when inactive
-  std::vector<std::uint32_t> slots_;  // slot -> block id
-  std::vector<int> coords_;           // slot -> block coordinates
-  AlignedVector<T> data_;             // slot-major, then channel, then local node
+  AlignedVector<std::int32_t> map_;     // block id -> slot, -1 when inactive
+  AlignedVector<std::uint32_t> slots_;  // slot -> block id
+  AlignedVector<int> coords_;           // slot -> block coordinates
+  AlignedVector<T> data_;               // slot-major, then channel, then local node
 };
 
 }  // namespace firn

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/aligned_vector.hpp"
 #include "engine/backend_kind.hpp"
 #include "kernels/combine.hpp"
 #include "kernels/hd.hpp"
@@ -28,6 +29,7 @@ struct HarmonicTerm {
   FIRN_HD void operator()(std::size_t i, float& acc) const { acc += 1.0f / float(i + 1); }
 };
 
+// Each case runs with its backend's memory space as the default, as the commands do.
 template <class Backend>
 class BackendCases : public ::testing::Test {
  protected:
@@ -35,13 +37,14 @@ class BackendCases : public ::testing::Test {
     const std::string why = backend_unavailable(backend_named(Backend::kName));
     if (!why.empty()) GTEST_SKIP() << Backend::kName << ": " << why;
   }
+  const backend::UseMemorySpace memory_{Backend::memory()};
 };
 
 TYPED_TEST_SUITE_P(BackendCases);
 
 TYPED_TEST_P(BackendCases, ParallelForReachesEveryItem) {
   const std::size_t n = 100003;
-  std::vector<long> out(n, -1);
+  AlignedVector<long> out(n, -1);
   TypeParam{}.parallel_for("square", n, SquareInto{out.data()});
   for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(out[i], long(i) * long(i)) << "item " << i;
 }

@@ -5,7 +5,8 @@ Runs the snowball_pair scene at preview resolution and checks what a user relies
 output file, the summary, momentum conservation while the balls fly and collide, that each .vtp
 opens in VTK's own vtkXMLPolyDataReader with the expected points and arrays, that re-running
 scene.resolved.toml reproduces the final state bit for bit, that SIGINT leaves valid frames and
-an `interrupted` summary, and that docs/scenes.md is what `firn help scene-keys` prints.
+an `interrupted` summary, that --profile times the launches without changing the run, and that
+docs/scenes.md is what `firn help scene-keys` prints.
 """
 import csv
 import glob
@@ -112,6 +113,22 @@ def test_rerun_resolved():
     a, b = summary(out), summary(again)
     check(a["state_hash"] == b["state_hash"] and a["steps"] == b["steps"],
           f"re-run differs: {a['state_hash']} after {a['steps']} steps vs {b['state_hash']} after {b['steps']}")
+
+
+def test_profile():
+    """--profile times the step's launches into summary.json without changing the run."""
+    plain = preview_run("unprofiled")
+    out = fresh("profiled")
+    r = run(["run", SCENE, "--preview", "--out", out, "--set", "simulation.end_time=4 ms", "--profile"])
+    check(r.returncode == 0, f"firn run --profile exited {r.returncode}: {r.stderr}")
+    s = summary(out)
+    check(s["state_hash"] == summary(plain)["state_hash"], "profiling changed the final state")
+    launches = s.get("launch_seconds", {})
+    for name in ["p2g", "grid_update", "g2p", "constitutive.hyperelastic_plastic"]:
+        check(launches.get(name, 0) > 0, f"launch_seconds lacks {name}: {launches}")
+    check(sum(launches.values()) <= s["step_seconds"], f"launches take {sum(launches.values())} s of {s['step_seconds']} s")
+    check("p2g" in r.stdout and "(outside launches)" in r.stdout, f"no launch table printed: {r.stdout}")
+    check("launch_seconds" not in summary(plain), "a run without --profile writes launch_seconds")
 
 
 def test_interrupt():

@@ -32,7 +32,17 @@ std::string RunSummary::to_json() const {
     << ",\n  \"wall_seconds\": " << wall_seconds << ",\n  \"step_seconds\": " << step_seconds
     << ",\n  \"particle_steps_per_second\": " << particle_steps_per_second() << ",\n  \"threads\": " << threads
     << ",\n  \"backend\": " << json_string(backend) << ",\n  \"precision\": " << json_string(precision)
-    << ",\n  \"peak_memory_mb\": " << peak_memory_mb << ",\n  \"state_hash\": " << json_string(state_hash) << "\n}\n";
+    << ",\n  \"peak_memory_mb\": " << peak_memory_mb << ",\n  \"state_hash\": " << json_string(state_hash);
+  if (!launch_seconds.empty()) {
+    j << ",\n  \"launch_seconds\": {";
+    const char* separator = "\n    ";
+    for (const auto& [name, seconds] : launch_seconds) {
+      j << separator << json_string(name) << ": " << seconds;
+      separator = ",\n    ";
+    }
+    j << "\n  }";
+  }
+  j << "\n}\n";
   return j.str();
 }
 

@@ -1,6 +1,7 @@
 // summary.json (DESIGN.md section 5): how a run ended and what it cost.
 #pragma once
 
+#include <map>
 #include <string>
 
 namespace firn {
@@ -19,6 +20,7 @@ struct RunSummary {
   std::string precision = "float";
   double peak_memory_mb = 0;
   std::string state_hash;  // of the final particle state (Simulation::state_hash), hex
+  std::map<std::string, double> launch_seconds;  // with RunOptions::profile: seconds per launch name
   double particle_steps_per_second() const { return step_seconds > 0 ? particle_steps / step_seconds : 0; }
   std::string to_json() const;
 };

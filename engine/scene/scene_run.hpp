@@ -41,6 +41,8 @@ struct RunOptions {
   // Continue the run in out_dir from its checkpoint: the scene must be the one the run wrote
   // (scene.resolved.toml); metrics.csv is cut back to the checkpoint's rows and grows from there.
   bool resume = false;
+  // Time every launch of the step (backend::LaunchProfile) into RunSummary::launch_seconds.
+  bool profile = false;
 };
 
 // Builds the scene (throws SceneError before anything is written if a body has no particles, and

@@ -17,6 +17,8 @@
 #include "engine/scene/scene_metrics.hpp"
 #include "engine/scene/scene_run.hpp"
 #include "engine/scene/scene_stepper.hpp"
+#include "kernels/backend/launch_profile.hpp"
+#include "kernels/backend/memory_space.hpp"
 
 namespace firn {
 namespace scene_run_detail {
@@ -61,6 +63,8 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
   SceneStepper<T, Backend> stepper(scene, backend, stepper_options);
   const SceneMaterials materials(scene);  // the scene's table of each engine material, for frames
   Simulation<T, Backend>& sim = stepper.sim();
+  backend::LaunchProfile profile;
+  if (options.profile) sim.backend().profile = &profile;
 
   RunSummary summary;
   summary.particles = sim.particle_count();
@@ -187,6 +191,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
   std::snprintf(hash, sizeof hash, "%016" PRIx64, sim.state_hash());
   summary.state_hash = hash;
   summary.peak_memory_mb = peak_memory_mb();
+  for (const auto& [name, entry] : profile.entries) summary.launch_seconds[name] = entry.seconds;
   summary.wall_seconds = seconds_since(wall0);
   write_file_atomically(options.out_dir + "/summary.json", summary.to_json());
   return summary;
@@ -195,6 +200,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
 // Runs the scene in its precision on `backend`.
 template <class Backend>
 RunSummary run_on(const LoadedScene& scene, const RunOptions& options, const Backend& backend) {
+  const backend::UseMemorySpace memory(Backend::memory());
   return scene.spec.precision == "double" ? run<double>(scene, options, backend) : run<float>(scene, options, backend);
 }
 

@@ -17,9 +17,11 @@
 //     per particle) whose order, and so whose rounding, changes from run to run.
 //   gather_blocks (G2P): one thread block per grid block loads the window into shared memory,
 //     threads take the particles, and the per-block results are reduced by the fixed tree.
-// Every launch synchronises before it returns: until particle storage and the grid live in device
-// memory (issue 14, item 3), kernels read and write host memory directly, which needs a device with
-// pageable memory access (HMM; see cuda_unavailable_reason), and the host reads what they wrote.
+// Memory: the backend's buffers are CUDA managed memory (cudaMallocManaged), which both the device
+// and the host address: pages move to the side that touches them. Every launch synchronises before
+// it returns, so the host may read what a kernel wrote, and the host code that still runs between
+// launches (collecting the occupied blocks, block activation, the reaction sums) is correct, at the
+// price of the pages it touches moving to the host and back (issue 14, item 3).
 // With a LaunchProfile, each launch's device time is measured with CUDA events.
 #pragma once
 
@@ -27,6 +29,7 @@
 #error "kernels/backend/cuda.hpp is compiled by nvcc only"
 #endif
 
+#include <cub/device/device_radix_sort.cuh>
 #include <cuda_runtime.h>
 
 #include <algorithm>
@@ -37,6 +40,7 @@
 
 #include "kernels/backend/block_colouring.hpp"
 #include "kernels/backend/launch_profile.hpp"
+#include "kernels/backend/memory_space.hpp"
 #include "kernels/backend/schedule.hpp"
 #include "kernels/block_window.hpp"
 #include "kernels/hd.hpp"
@@ -193,12 +197,41 @@ __global__ void gather_block(const std::uint32_t* blocks, G gather, Combine comb
   if (threadIdx.x == 0) out[blockIdx.x] = shared[0];
 }
 
+// Scratch for one launch, from the stream-ordered pool (cheap after the first steps), freed with
+// free_buffer in stream order.
 template <class T>
 T* device_buffer(std::size_t n) {
   void* p = nullptr;
-  check(cudaMalloc(&p, n * sizeof(T)), "cudaMalloc");
+  check(cudaMallocAsync(&p, n * sizeof(T), 0), "cudaMallocAsync");
   return static_cast<T*>(p);
 }
+inline void free_buffer(void* p) { check(cudaFreeAsync(p, 0), "cudaFreeAsync"); }
+
+static __global__ void iota(std::uint32_t n, std::uint32_t* out) {
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i < n) out[i] = i;
+}
+
+// begin[k] = the first position of key k in the sorted keys (lower bound), for k in [0, K].
+static __global__ void bucket_bounds(const std::uint32_t* sorted, std::uint32_t n, std::uint32_t K, std::uint32_t* begin) {
+  const std::uint32_t k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k > K) return;
+  std::uint32_t lo = 0, hi = n;
+  while (lo < hi) {
+    const std::uint32_t mid = lo + (hi - lo) / 2;
+    if (sorted[mid] < k) lo = mid + 1;
+    else hi = mid;
+  }
+  begin[k] = lo;
+}
+
+inline void* managed_allocate(std::size_t bytes) {
+  void* p = nullptr;
+  check(cudaMallocManaged(&p, bytes), "cudaMallocManaged");
+  return p;
+}
+// Errors are dropped: a buffer freed after the runtime has shut down (a static) has nothing to free.
+inline void managed_deallocate(void* p, std::size_t) { cudaFree(p); }
 
 inline unsigned grid_size(std::size_t n, int threads) { return unsigned((n + std::size_t(threads) - 1) / std::size_t(threads)); }
 
@@ -208,9 +241,11 @@ struct Cuda {
   static constexpr const char* kName = "cuda";
   LaunchProfile* profile = nullptr;
 
-  // The binning's counting sort splits the particles into threads() parts counted one per thread;
-  // until it runs on the device (issue 14, item 3) one part keeps its table small.
   int threads() const { return 1; }
+  static const MemorySpace& memory() {
+    static constexpr MemorySpace kManaged{"cuda_managed", cuda_detail::managed_allocate, cuda_detail::managed_deallocate};
+    return kManaged;
+  }
 
   template <class F>
   void parallel_for(const char* name, std::size_t n, const F& f, Schedule = Schedule::uniform) const {
@@ -225,6 +260,32 @@ struct Cuda {
     R result = init;
     launch(name, [&] { result = reduce(n, init, f, combine); });
     return result;
+  }
+
+  // The binning's stable sort (engine/particle_binning.hpp) on the device: order = the stable
+  // permutation sorting keys[0, n) (each below K), begin[k] = the first sorted position of key k
+  // (K + 1 entries). CUB's radix sort is stable and its result unique, so it is the CPU's counting
+  // sort's result, the same on every run.
+  void sort_into_buckets(const std::uint32_t* keys, std::size_t n, std::size_t K, std::uint32_t* order,
+                         std::uint32_t* begin) const {
+    launch("bin.sort", [&] {
+      using cuda_detail::kThreads;
+      int bits = 1;
+      while (bits < 32 && (std::size_t(1) << bits) < K) ++bits;
+      std::uint32_t* sorted = cuda_detail::device_buffer<std::uint32_t>(2 * n + 1);
+      std::uint32_t* index = sorted + n;
+      if (n) cuda_detail::iota<<<cuda_detail::grid_size(n, kThreads), kThreads>>>(std::uint32_t(n), index);
+      std::size_t temp_bytes = 0;
+      cuda_detail::check(cub::DeviceRadixSort::SortPairs(nullptr, temp_bytes, keys, sorted, index, order, n, 0, bits),
+                         "radix sort");
+      void* temp = cuda_detail::device_buffer<unsigned char>(temp_bytes + 1);
+      cuda_detail::check(cub::DeviceRadixSort::SortPairs(temp, temp_bytes, keys, sorted, index, order, n, 0, bits),
+                         "radix sort");
+      cuda_detail::bucket_bounds<<<cuda_detail::grid_size(K + 1, kThreads), kThreads>>>(sorted, std::uint32_t(n),
+                                                                                          std::uint32_t(K), begin);
+      cuda_detail::free_buffer(temp);
+      cuda_detail::free_buffer(sorted);
+    });
   }
 
   // The P2G scatter strategy over a kernels/step/p2g_scatter.hpp functor (see the top of this file).
@@ -253,7 +314,7 @@ struct Cuda {
       cuda_detail::gather_block<<<unsigned(count), cuda_detail::kThreads>>>(blocks, gather, combine, partial);
       cuda_detail::check(cudaGetLastError(), name);
       result = reduce(count, R{}, cuda_detail::FoldPartials<R, Combine>{partial, combine}, combine);
-      cuda_detail::check(cudaFree(partial), "cudaFree");
+      cuda_detail::free_buffer(partial);
     });
     return result;
   }
@@ -298,7 +359,7 @@ struct Cuda {
                                                        partial + blocks);
     R result = init;
     cuda_detail::check(cudaMemcpy(&result, partial + blocks, sizeof(R), cudaMemcpyDeviceToHost), "reduce");
-    cuda_detail::check(cudaFree(partial), "cudaFree");
+    cuda_detail::free_buffer(partial);
     return result;
   }
 };

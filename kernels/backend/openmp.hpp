@@ -12,6 +12,7 @@
 
 #include "kernels/backend/block_colouring.hpp"
 #include "kernels/backend/launch_profile.hpp"
+#include "kernels/backend/memory_space.hpp"
 #include "kernels/backend/reduce_chunks.hpp"
 #include "kernels/backend/schedule.hpp"
 
@@ -30,6 +31,7 @@ struct OpenMP {
   explicit OpenMP(int threads) : thread_count(threads > 0 ? threads : omp_get_max_threads()) {}
 
   int threads() const { return thread_count; }
+  static const MemorySpace& memory() { return kHostMemory; }
 
   template <class F>
   void parallel_for(const char* name, std::size_t n, F&& f, Schedule schedule = Schedule::uniform) const {

@@ -8,6 +8,7 @@
 
 #include "kernels/backend/block_colouring.hpp"
 #include "kernels/backend/launch_profile.hpp"
+#include "kernels/backend/memory_space.hpp"
 #include "kernels/backend/reduce_chunks.hpp"
 #include "kernels/backend/schedule.hpp"
 
@@ -18,6 +19,7 @@ struct Serial {
   LaunchProfile* profile = nullptr;
 
   int threads() const { return 1; }
+  static const MemorySpace& memory() { return kHostMemory; }
 
   template <class F>
   void parallel_for(const char* name, std::size_t n, F&& f, Schedule = Schedule::uniform) const {

@@ -6,10 +6,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "engine/backend_kind.hpp"
+#include "kernels/backend/launch_profile.hpp"
 
 namespace firn::bench {
 
@@ -25,6 +27,7 @@ struct StepBenchmarkOptions {
   int idle_materials = 0;           // extra materials with no particles
   bool energy_budget = false;       // keep the energy budget, as `firn run` does
   std::string material;             // a material preset for the cube; empty: the neo-Hookean one
+  bool profile = false;             // time every launch (backend::LaunchProfile)
 };
 
 struct StepBenchmarkResult {
@@ -35,6 +38,7 @@ struct StepBenchmarkResult {
   std::size_t grid_blocks_active = 0, grid_memory_bytes = 0;
   double particle_steps_per_second = 0;
   std::uint64_t state_hash = 0;
+  std::map<std::string, backend::LaunchProfile::Entry> launches;  // with `profile`: per launch name
 };
 
 StepBenchmarkResult benchmark_step(const StepBenchmarkOptions& o);

@@ -39,6 +39,8 @@ StepBenchmarkResult benchmark_step_in(const StepBenchmarkOptions& o, const Backe
   for (const std::string& name : o.enable) sim.enable(attribute_named(name));
   if (o.energy_budget) sim.enable_energy_budget();
   sim.prepare();
+  backend::LaunchProfile profile;
+  if (o.profile) sim.backend().profile = &profile;
   const auto t0 = std::chrono::steady_clock::now();
   for (int s = 0; s < o.steps; ++s) sim.step();
   StepBenchmarkResult r;
@@ -51,12 +53,14 @@ StepBenchmarkResult benchmark_step_in(const StepBenchmarkOptions& o, const Backe
   r.grid_memory_bytes = sim.grid().memory_bytes();
   r.particle_steps_per_second = double(sim.particle_count()) * o.steps / r.seconds;
   r.state_hash = sim.state_hash();
+  r.launches = profile.entries;
   return r;
 }
 
 // The benchmark in the options' precision.
 template <class Backend>
 StepBenchmarkResult benchmark_step_on(const StepBenchmarkOptions& o, const Backend& backend) {
+  const backend::UseMemorySpace memory(Backend::memory());
   return o.precision == "float" ? benchmark_step_in<float>(o, backend) : benchmark_step_in<double>(o, backend);
 }
 
