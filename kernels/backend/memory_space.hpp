@@ -33,7 +33,8 @@ inline const MemorySpace* default_space = &kHostMemory;
 // The space new containers allocate in: host memory unless a UseMemorySpace is alive.
 inline const MemorySpace& default_memory_space() { return *memory_detail::default_space; }
 
-// Makes `space` the default for the scope's lifetime (scopes nest).
+// Makes `space` the default for the scope's lifetime (scopes nest). The default is one per process:
+// open scopes on the thread that builds simulations, not inside parallel regions.
 class UseMemorySpace {
  public:
   explicit UseMemorySpace(const MemorySpace& space) : previous_(memory_detail::default_space) {
