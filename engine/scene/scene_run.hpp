@@ -41,7 +41,8 @@ struct RunOptions {
   // Continue the run in out_dir from its checkpoint: the scene must be the one the run wrote
   // (scene.resolved.toml); metrics.csv is cut back to the checkpoint's rows and grows from there.
   bool resume = false;
-  // Time every launch of the step (backend::LaunchProfile) into RunSummary::launch_seconds.
+  // Time every launch of the step loop (backend::LaunchProfile; not the frames' diagnostics) into
+  // RunSummary::launch_seconds.
   bool profile = false;
 };
 

@@ -63,8 +63,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
   SceneStepper<T, Backend> stepper(scene, backend, stepper_options);
   const SceneMaterials materials(scene);  // the scene's table of each engine material, for frames
   Simulation<T, Backend>& sim = stepper.sim();
-  backend::LaunchProfile profile;
-  if (options.profile) sim.backend().profile = &profile;
+  backend::LaunchProfile profile;  // the step loop's launches alone (not the frames' diagnostics)
 
   RunSummary summary;
   summary.particles = sim.particle_count();
@@ -152,7 +151,9 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
           throw std::runtime_error("interrupted");
         }
         const auto t0 = Clock::now();
+        if (options.profile) sim.backend().profile = &profile;
         stepper.step_toward(target);
+        sim.backend().profile = nullptr;
         step_seconds += seconds_since(t0);
         summary.particle_steps += double(sim.particle_count());
         if (options.progress) options.progress({sim.time(), scene.end_time, sim.steps(), f, frames, step_seconds});
