@@ -224,9 +224,11 @@ void add_run_command(CLI::App& app) {
       set_exit_status(s.status == "interrupted" ? 130 : 1);
       return;
     }
-    std::printf("%s: ok, %zu particles, %ld steps, %.1f s (%.3g particle-steps/s on %s, %d threads), outputs in %s\n",
+    // A GPU run has no thread count to speak of.
+    const std::string where = s.backend == "cuda" ? s.backend : s.backend + ", " + std::to_string(s.threads) + " threads";
+    std::printf("%s: ok, %zu particles, %ld steps, %.1f s (%.3g particle-steps/s on %s), outputs in %s\n",
                 scene.spec.name.c_str(), s.particles, s.steps, s.wall_seconds, s.particle_steps_per_second(),
-                s.backend.c_str(), s.threads, options.out_dir.c_str());
+                where.c_str(), options.out_dir.c_str());
     if (o->profile && !resume) print_launches(s);
     if (rendering.finish)
       std::printf("frames in %s/frames%s (%s)\n", options.out_dir.c_str(), o->video ? ", video.mp4" : "",
