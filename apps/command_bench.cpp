@@ -11,16 +11,15 @@
 // firn bench surface [--particles N] [--threads N] [--repeats N]
 // Times the snow surface reconstruction of a synthetic snow block; prints particles_per_second and
 // checks that the mesh is a closed manifold (outside the timing).
-#include <algorithm>
 #include <cinttypes>
 #include <cstdio>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
+#include "apps/launch_table.hpp"
 #include "engine/material_catalog.hpp"
 #include "studies/bench/step_benchmark.hpp"
 #include "studies/bench/surface_benchmark.hpp"
@@ -38,17 +37,7 @@ void print_step_benchmark(const bench::StepBenchmarkOptions& o) {
               r.bytes_per_particle, o.steps, r.seconds);
   std::printf("grid_blocks_active %zu\ngrid_memory_mb %.2f\n", r.grid_blocks_active, r.grid_memory_bytes / 1048576.0);
   std::printf("particle_steps_per_second %.0f\nstate_hash %016" PRIx64 "\n", r.particle_steps_per_second, r.state_hash);
-  if (!o.profile) return;
-  // Launch names with their time per step, most expensive first; what is left is host work.
-  std::vector<std::pair<std::string, backend::LaunchProfile::Entry>> launches(r.launches.begin(), r.launches.end());
-  std::sort(launches.begin(), launches.end(), [](const auto& a, const auto& b) { return a.second.seconds > b.second.seconds; });
-  double in_launches = 0;
-  for (const auto& [name, e] : launches) {
-    std::printf("launch %-32s %10.4f ms/step %8.1f launches/step\n", name.c_str(), 1e3 * e.seconds / o.steps,
-                double(e.launches) / o.steps);
-    in_launches += e.seconds;
-  }
-  std::printf("launch %-32s %10.4f ms/step\n", "(outside launches)", 1e3 * (r.seconds - in_launches) / o.steps);
+  if (o.profile) print_launch_table(r.launches, r.seconds, o.steps);
 }
 
 void print_surface_benchmark(const bench::SurfaceBenchmarkOptions& o) {

@@ -13,7 +13,6 @@
 // Exit status: 0 completed, 1 unstable or failed, 2 bad scene, options or checkpoint, 130 interrupted.
 #include <unistd.h>
 
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -21,11 +20,11 @@
 #include <filesystem>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "apps/backend_option.hpp"
 #include "apps/commands.hpp"
+#include "apps/launch_table.hpp"
 #include "engine/scene/checkpoint.hpp"
 #include "engine/scene/scene_run.hpp"
 #include "studies/sweep/run_record.hpp"
@@ -70,19 +69,6 @@ class ProgressLine {
   bool drawn_ = false;
 };
 
-// The step loop's costliest launches (--profile) and its time outside launches (host work),
-// per step of a run that did not resume.
-void print_launches(const RunSummary& s) {
-  std::vector<std::pair<std::string, double>> launches(s.launch_seconds.begin(), s.launch_seconds.end());
-  std::sort(launches.begin(), launches.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
-  double in_launches = 0;
-  for (const auto& launch : launches) in_launches += launch.second;
-  const double per_step = s.steps > 0 ? 1e3 / double(s.steps) : 0;
-  for (std::size_t i = 0; i < launches.size() && i < 12; ++i)
-    std::printf("  %-32s %9.3f ms/step\n", launches[i].first.c_str(), launches[i].second * per_step);
-  std::printf("  %-32s %9.3f ms/step\n", "(outside launches)", (s.step_seconds - in_launches) * per_step);
-}
-
 // A run whose summary.json says it finished.
 bool finished_run(const std::string& out_dir) {
   const std::optional<std::string> summary = sweep::file_text(out_dir + "/summary.json");
@@ -117,7 +103,7 @@ void add_run_command(CLI::App& app) {
   run->add_option("--gl", o->gl, "OpenGL context: egl or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
   run->add_flag("--report", o->report, "write DIR/report.html (firn report DIR) when the run ends");
   run->add_flag("--profile", o->profile,
-                "time every launch of the step; print the costliest and write all to summary.json (launch_seconds)");
+                "time every launch of the step loop; print the table and write it to summary.json (launch_seconds)");
   run->callback([o]() {
     auto refuse = [](const std::string& why) {
       std::fprintf(stderr, "firn run: %s\n", why.c_str());
@@ -229,7 +215,7 @@ void add_run_command(CLI::App& app) {
     std::printf("%s: ok, %zu particles, %ld steps, %.1f s (%.3g particle-steps/s on %s), outputs in %s\n",
                 scene.spec.name.c_str(), s.particles, s.steps, s.wall_seconds, s.particle_steps_per_second(),
                 where.c_str(), options.out_dir.c_str());
-    if (o->profile && !resume) print_launches(s);
+    if (o->profile && !resume) print_launch_table(s.launches, s.step_seconds, s.steps);
     if (rendering.finish)
       std::printf("frames in %s/frames%s (%s)\n", options.out_dir.c_str(), o->video ? ", video.mp4" : "",
                   rendering.description.c_str());

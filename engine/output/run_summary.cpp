@@ -33,11 +33,11 @@ std::string RunSummary::to_json() const {
     << ",\n  \"particle_steps_per_second\": " << particle_steps_per_second() << ",\n  \"threads\": " << threads
     << ",\n  \"backend\": " << json_string(backend) << ",\n  \"precision\": " << json_string(precision)
     << ",\n  \"peak_memory_mb\": " << peak_memory_mb << ",\n  \"state_hash\": " << json_string(state_hash);
-  if (!launch_seconds.empty()) {
+  if (!launches.empty()) {
     j << ",\n  \"launch_seconds\": {";
     const char* separator = "\n    ";
-    for (const auto& [name, seconds] : launch_seconds) {
-      j << separator << json_string(name) << ": " << seconds;
+    for (const auto& [name, entry] : launches) {
+      j << separator << json_string(name) << ": " << entry.seconds;
       separator = ",\n    ";
     }
     j << "\n  }";

@@ -4,6 +4,8 @@
 #include <map>
 #include <string>
 
+#include "kernels/backend/launch_profile.hpp"
+
 namespace firn {
 
 struct RunSummary {
@@ -20,7 +22,8 @@ struct RunSummary {
   std::string precision = "float";
   double peak_memory_mb = 0;
   std::string state_hash;  // of the final particle state (Simulation::state_hash), hex
-  std::map<std::string, double> launch_seconds;  // with RunOptions::profile: seconds per launch name
+  // With RunOptions::profile: the step loop's launches by name (summary.json: launch_seconds).
+  std::map<std::string, backend::LaunchProfile::Entry> launches;
   double particle_steps_per_second() const { return step_seconds > 0 ? particle_steps / step_seconds : 0; }
   std::string to_json() const;
 };

@@ -42,7 +42,7 @@ struct RunOptions {
   // (scene.resolved.toml); metrics.csv is cut back to the checkpoint's rows and grows from there.
   bool resume = false;
   // Time every launch of the step loop (backend::LaunchProfile; not the frames' diagnostics) into
-  // RunSummary::launch_seconds.
+  // RunSummary::launches.
   bool profile = false;
 };
 

@@ -192,7 +192,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
   std::snprintf(hash, sizeof hash, "%016" PRIx64, sim.state_hash());
   summary.state_hash = hash;
   summary.peak_memory_mb = peak_memory_mb();
-  for (const auto& [name, entry] : profile.entries) summary.launch_seconds[name] = entry.seconds;
+  summary.launches = profile.entries;
   summary.wall_seconds = seconds_since(wall0);
   write_file_atomically(options.out_dir + "/summary.json", summary.to_json());
   return summary;
