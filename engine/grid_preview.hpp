@@ -36,7 +36,7 @@ GridPreview preview_grid(Simulation<T, Backend>& sim) {
   else
     binning.compute_keys<CubicBSpline<T>>(sim.particles(), ranges, scratch.geometry(), scratch.blocks(), sim.backend());
   binning.sort(scratch.blocks(), sim.backend());
-  scratch.activate(binning.particle_blocks(), sim.backend());
+  scratch.activate(binning.occupied_blocks(), sim.backend());
 
   GridPreview p;
   for (int d = 0; d < 3; ++d) p.cells[d] = grid.geometry().nodes[d] - 1;

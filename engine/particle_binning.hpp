@@ -13,8 +13,10 @@
 #include <vector>
 
 #include "engine/aligned_vector.hpp"
+#include "engine/block_compaction.hpp"
 #include "kernels/backend/block_colouring.hpp"
 #include "kernels/binning_view.hpp"
+#include "kernels/block_lists.hpp"
 #include "kernels/combine.hpp"
 #include "kernels/grid_geometry.hpp"
 #include "kernels/hd.hpp"
@@ -79,7 +81,7 @@ class ParticleBinning {
     } else {
       counting_sort(n, K, backend);
     }
-    collect_blocks(blocks);
+    collect_blocks(blocks, backend);
   }
 
   // The CPU's stable counting sort in backend.threads() parts: order and bucket ranges (public, as
@@ -139,6 +141,8 @@ class ParticleBinning {
   BinningView view() const { return BinningView{order_.data(), bucket_begin_.data(), block_count_, material_count_}; }
   // Blocks holding particles, in increasing id, and the same grouped by parity colour.
   const AlignedVector<std::uint32_t>& particle_blocks() const { return particle_blocks_; }
+  // Per block of the box, 1 where particles are (the grid's activation reads it).
+  const std::uint8_t* occupied_blocks() const { return occupied_.data(); }
   backend::BlockColouring colouring() const {
     backend::BlockColouring c;
     c.blocks = coloured_.data();
@@ -155,31 +159,25 @@ class ParticleBinning {
   template <class Backend>
   static constexpr bool sorts_on_device(long) { return false; }
 
-  void collect_blocks(const int blocks[3]) {
-    particle_blocks_.clear();
-    std::size_t per_colour[backend::BlockColouring::kColours] = {};
-    const int syz = blocks[1] * blocks[2];
-    for (std::size_t b = 0; b < block_count_; ++b) {
-      bool occupied = false;
-      for (std::size_t m = 0; m < material_count_ && !occupied; ++m)
-        occupied = bucket_begin_[m * block_count_ + b] != bucket_begin_[m * block_count_ + b + 1];
-      if (!occupied) continue;
-      particle_blocks_.push_back(std::uint32_t(b));
-      ++per_colour[colour_of(b, syz, blocks[2])];
-    }
-    colour_begin_[0] = 0;
-    for (int c = 0; c < backend::BlockColouring::kColours; ++c) colour_begin_[c + 1] = colour_begin_[c] + per_colour[c];
-    coloured_.resize(particle_blocks_.size());
-    std::size_t next[backend::BlockColouring::kColours];
-    for (int c = 0; c < backend::BlockColouring::kColours; ++c) next[c] = colour_begin_[c];
-    for (std::uint32_t b : particle_blocks_) coloured_[next[colour_of(b, syz, blocks[2])]++] = b;
-  }
-  static int colour_of(std::size_t b, int syz, int bz_count) {
-    return backend::block_colour(int(b) / syz, (int(b) / bz_count) % (syz / bz_count), int(b) % bz_count);
+  // The blocks holding particles, in id order and by colour, and their flags, by compaction on the
+  // backend (kernels/block_lists.hpp).
+  template <class Backend>
+  void collect_blocks(const int blocks[3], const Backend& backend) {
+    const BlockBox box{{blocks[0], blocks[1], blocks[2]}};
+    const ParticleBlockColour colour{bucket_begin_.data(), block_count_, material_count_, box};
+    const auto begins = compaction_.count(block_count_, colour, backend);
+    for (int c = 0; c <= backend::BlockColouring::kColours; ++c) colour_begin_[c] = begins[std::size_t(c)];
+    const std::size_t count = begins[backend::BlockColouring::kColours];
+    particle_blocks_.resize(count);
+    coloured_.resize(count);
+    occupied_.resize(block_count_);
+    compaction_.write(ParticleBlockLists{particle_blocks_.data(), coloured_.data(), occupied_.data()}, backend);
   }
 
   std::size_t block_count_ = 0, material_count_ = 0;
   AlignedVector<std::uint32_t> keys_, order_, counts_, bucket_begin_, particle_blocks_, coloured_;
+  AlignedVector<std::uint8_t> occupied_;  // [block]: 1 where particles are
+  BlockCompaction<backend::BlockColouring::kColours> compaction_{{"bin.blocks.count", "bin.blocks.prefix", "bin.blocks.write"}};
   std::size_t colour_begin_[backend::BlockColouring::kColours + 1] = {};
 };
 

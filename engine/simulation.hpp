@@ -47,6 +47,7 @@
 #include "kernels/motion_sums.hpp"
 #include "kernels/particle_state.hpp"
 #include "kernels/shape_functions.hpp"
+#include "kernels/step/collider_sums.hpp"
 #include "kernels/step/constitutive_update.hpp"
 #include "kernels/step/elastic_energy.hpp"
 #include "kernels/step/contact_normals.hpp"
@@ -106,7 +107,7 @@ struct EnergyBudget {
 struct FootprintMap {
   int nx = 0, nz = 0;              // grid nodes along x and z; column (i, k) at origin + (i, k) dx
   double origin_x = 0, origin_z = 0, dx = 0;
-  std::vector<double> impulse;     // [i * nz + k] (N s)
+  AlignedVector<double> impulse;   // [i * nz + k] (N s)
   double time = 0;                 // integration time (s)
   void reset() {
     std::fill(impulse.begin(), impulse.end(), 0.0);
@@ -682,10 +683,10 @@ class Simulation {
       storage_.gather(binning_.order(), storage_.size(), backend_);
       binning_.reordered(backend_);
     }
-    grid_.activate(binning_.particle_blocks(), backend_);
+    grid_.activate(binning_.occupied_blocks(), backend_);
     if (contact_active()) {  // the same blocks in the same slots as grid_
-      contact_.grid_b.activate(binning_.particle_blocks(), backend_);
-      contact_.normals.activate(binning_.particle_blocks(), backend_);
+      contact_.grid_b.activate(binning_.occupied_blocks(), backend_);
+      contact_.normals.activate(binning_.occupied_blocks(), backend_);
     }
   }
 
@@ -719,7 +720,8 @@ class Simulation {
   }
 
   // The grid update's parameters, with the colliders posed at the end of the step; their reactions
-  // are summed per block, then over blocks in slot order (the same sums for any thread count).
+  // are summed per block, then over blocks by a reduction on the backend (the same sums for any
+  // thread count).
   void pose_colliders(T dt, bool contact) {
     const GridGeometry<T> g = grid_.geometry();
     GridUpdateParams<T>& up = grid_params_[0];
@@ -741,75 +743,63 @@ class Simulation {
       up.walls[f] = Wall<T>{config_.walls[f].type, config_.walls[f].width, T(config_.walls[f].friction),
                             config_.walls[f].mirror};
     const std::size_t slots = grid_.active_count();
-    reactions_.assign(slots * colliders_.size() * kReactionComponents, T(0));
+    // The grid update writes every entry of its per-block sums, so they are sized, not filled.
+    reactions_.resize(slots * colliders_.size() * kReactionComponents);
     up.reactions = reactions_.data();
     up.work = nullptr;
     if (budget_enabled_) {
-      work_.assign(slots * kWorkKinds, T(0));
+      work_.resize(slots * kWorkKinds);
       up.work = work_.data();
     }
     up.footprint_collider = footprint_collider_;
     up.footprint = nullptr;
     if (footprint_collider_ >= 0) {
-      footprint_blocks_.assign(slots * kBlockSize * kBlockSize, T(0));
+      footprint_blocks_.resize(slots * kBlockSize * kBlockSize);
       up.footprint = footprint_blocks_.data();
     }
     if (!contact) return;
     // Group B's grid update: the same colliders and walls, its own per-block sums.
     GridUpdateParams<T>& b = grid_params_[1];
     b = up;
-    contact_.reactions_b.assign(reactions_.size(), T(0));
+    contact_.reactions_b.resize(reactions_.size());
     b.reactions = contact_.reactions_b.data();
     if (up.work) {
-      contact_.work_b.assign(work_.size(), T(0));
+      contact_.work_b.resize(work_.size());
       b.work = contact_.work_b.data();
     }
     if (up.footprint) {
-      contact_.footprint_b.assign(footprint_blocks_.size(), T(0));
+      contact_.footprint_b.resize(footprint_blocks_.size());
       b.footprint = contact_.footprint_b.data();
     }
   }
 
   // Sums the per-block collider reactions and footprint columns of the last grid update (both
-  // contact groups' with `contact`, slot by slot).
+  // contact groups' with `contact`) on the backend (kernels/step/collider_sums.hpp).
   void collect_reactions(double dt, bool contact) {
     const std::size_t count = colliders_.size(), slots = grid_.active_count();
+    const T* b = contact ? contact_.reactions_b.data() : nullptr;
     for (std::size_t c = 0; c < count; ++c) {
-      double f[kReactionComponents] = {0, 0, 0, 0, 0, 0};
-      for (std::size_t s = 0; s < slots; ++s)
-        for (int i = 0; i < kReactionComponents; ++i) {
-          const std::size_t k = (s * count + c) * kReactionComponents + std::size_t(i);
-          f[i] += double(reactions_[k]) + (contact ? double(contact_.reactions_b[k]) : 0.0);
-        }
-      colliders_[c].add_reaction(f, f + 3, dt);
+      const DoubleSums<kReactionComponents> f = backend_.parallel_reduce(
+          "reactions", slots, DoubleSums<kReactionComponents>{},
+          SlotSums<T, kReactionComponents>{reactions_.data(), b, count * kReactionComponents, c * kReactionComponents}, Sum{});
+      colliders_[c].add_reaction(f.v, f.v + 3, dt);
     }
     if (footprint_collider_ < 0) return;
-    for (std::size_t s = 0; s < slots; ++s) {
-      const int* b = grid_.slot_coords(s);
-      for (int lx = 0; lx < kBlockSize; ++lx)
-        for (int lz = 0; lz < kBlockSize; ++lz) {
-          const int i = b[0] * kBlockSize + lx, k = b[2] * kBlockSize + lz;
-          if (i < footprint_.nx && k < footprint_.nz)
-          {
-            const std::size_t q = s * kBlockSize * kBlockSize + std::size_t(lx * kBlockSize + lz);
-            footprint_.impulse[std::size_t(i) * std::size_t(footprint_.nz) + std::size_t(k)] +=
-                dt * (double(footprint_blocks_[q]) + (contact ? double(contact_.footprint_b[q]) : 0.0));
-          }
-        }
-    }
+    const BlockBox box = grid_.box();
+    backend_.parallel_for("footprint", std::size_t(box.count[0]) * std::size_t(box.count[2]),
+                          FootprintColumns<T>{footprint_blocks_.data(), contact ? contact_.footprint_b.data() : nullptr,
+                                              grid_.block_map(), box, dt, footprint_.impulse.data(), footprint_.nx,
+                                              footprint_.nz});
     footprint_.time += dt;
   }
 
-  // Adds the per-block work of the last grid update to the budget, over blocks in slot order.
+  // Adds the per-block work of the last grid update to the budget.
   void collect_work(bool contact) {
-    double w[kWorkKinds] = {0, 0};
-    for (std::size_t s = 0; s < grid_.active_count(); ++s)
-      for (int k = 0; k < kWorkKinds; ++k) {
-        const std::size_t q = s * kWorkKinds + std::size_t(k);
-        w[k] += double(work_[q]) + (contact ? double(contact_.work_b[q]) : 0.0);
-      }
-    budget_.gravity += w[kGravityWork];
-    budget_.colliders += w[kColliderWork];
+    const DoubleSums<kWorkKinds> w =
+        backend_.parallel_reduce("work", grid_.active_count(), DoubleSums<kWorkKinds>{},
+                                 SlotSums<T, kWorkKinds>{work_.data(), contact ? contact_.work_b.data() : nullptr, kWorkKinds, 0}, Sum{});
+    budget_.gravity += w.v[kGravityWork];
+    budget_.colliders += w.v[kColliderWork];
   }
 
   struct Load {

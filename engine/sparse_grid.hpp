@@ -7,6 +7,8 @@
 #include <cstdint>
 
 #include "engine/aligned_vector.hpp"
+#include "engine/block_compaction.hpp"
+#include "kernels/block_lists.hpp"
 #include "kernels/block_window.hpp"
 #include "kernels/grid_geometry.hpp"
 #include "kernels/grid_slots.hpp"
@@ -36,31 +38,17 @@ class SparseGrid {
            slots_.capacity() * sizeof(std::uint32_t) + coords_.capacity() * sizeof(int);
   }
 
-  // Activates blocks b + {0,1}^3 of every particle block (ids in increasing order) and zeroes them.
-  // Slots are numbered in that order, so the layout does not depend on the thread count.
+  // Activates blocks b + {0,1}^3 of every particle block b (`occupied`: a flag per block of the
+  // same box) and zeroes them, by compaction on the backend (kernels/block_lists.hpp). Slots are
+  // numbered in increasing block id, so the layout depends only on where the particles are.
   template <class Backend>
-  void activate(const AlignedVector<std::uint32_t>& particle_blocks, const Backend& backend) {
-    for (std::uint32_t id : slots_) map_[id] = -1;
-    slots_.clear();
-    const int syz = blocks_[1] * blocks_[2];
-    for (std::uint32_t id : particle_blocks) {
-      const int bx = int(id) / syz, by = (int(id) / blocks_[2]) % blocks_[1], bz = int(id) % blocks_[2];
-      for (int o = 0; o < 8; ++o) {
-        const std::uint32_t nb = std::uint32_t(((bx + (o >> 2)) * blocks_[1] + by + ((o >> 1) & 1)) * blocks_[2] + bz + (o & 1));
-        if (map_[nb] < 0) {
-          map_[nb] = std::int32_t(slots_.size());
-          slots_.push_back(nb);
-        }
-      }
-    }
-    coords_.resize(slots_.size() * 3);
-    for (std::size_t s = 0; s < slots_.size(); ++s) {
-      const int id = int(slots_[s]);
-      coords_[3 * s] = id / syz;
-      coords_[3 * s + 1] = (id / blocks_[2]) % blocks_[1];
-      coords_[3 * s + 2] = id % blocks_[2];
-    }
-    data_.resize(slots_.size() * std::size_t(channels_) * kBlockNodes);
+  void activate(const std::uint8_t* occupied, const Backend& backend) {
+    const ActiveBlock active{occupied, box()};
+    const std::size_t count = compaction_.count(map_.size(), active, backend)[1];
+    slots_.resize(count);
+    coords_.resize(count * 3);
+    compaction_.write(ActiveBlockSlots{map_.data(), slots_.data(), coords_.data(), box()}, backend);
+    data_.resize(count * std::size_t(channels_) * kBlockNodes);
     clear(backend);
   }
 
@@ -79,6 +67,8 @@ class SparseGrid {
   }
   GridSlotsView<T> slots() { return GridSlotsView<T>{data_.data(), coords_.data(), channels_}; }
   const int* slot_coords(std::size_t s) const { return coords_.data() + 3 * s; }
+  const std::int32_t* block_map() const { return map_.data(); }  // block id -> slot, -1 when inactive
+  BlockBox box() const { return BlockBox{{blocks_[0], blocks_[1], blocks_[2]}}; }
 
  private:
   GridGeometry<T> geometry_{};
@@ -88,6 +78,7 @@ class SparseGrid {
   AlignedVector<std::uint32_t> slots_;  // slot -> block id
   AlignedVector<int> coords_;           // slot -> block coordinates
   AlignedVector<T> data_;               // slot-major, then channel, then local node
+  BlockCompaction<1> compaction_{{"grid.activate.count", "grid.activate.prefix", "grid.activate.write"}};
 };
 
 }  // namespace firn

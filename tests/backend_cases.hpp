@@ -7,11 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "engine/aligned_vector.hpp"
 #include "engine/backend_kind.hpp"
+#include "engine/block_compaction.hpp"
+#include "kernels/block_lists.hpp"
 #include "kernels/combine.hpp"
 #include "kernels/hd.hpp"
 #include "tests/two_bodies.hpp"
@@ -71,7 +74,86 @@ TYPED_TEST_P(BackendCases, StepRepeatsAndAgreesWithOpenMP) {
     }
 }
 
+// The block lists of a step by compaction on the backend (kernels/block_lists.hpp) against the
+// plain host loops: the particle blocks of two materials' buckets in id order and by parity colour,
+// then the active blocks (b + {0,1}^3 of every particle block) in slots of increasing id.
+TYPED_TEST_P(BackendCases, BlockListsMatchHostLoops) {
+  const BlockBox box{{13, 7, 11}};  // 1001 blocks: four compaction chunks, the last one partial
+  const std::size_t blocks = 13 * 7 * 11, materials = 2;
+  AlignedVector<std::uint32_t> bucket_begin(materials * blocks + 1, 0);
+  for (std::size_t q = 0; q < materials * blocks; ++q) {
+    int c[3];
+    box.coords(q % blocks, c);
+    const bool interior = c[0] < 12 && c[1] < 6 && c[2] < 10;
+    const std::uint32_t count = interior && (q * 2654435761u) % 7 == 0 ? std::uint32_t(1 + q % 3) : 0;
+    bucket_begin[q + 1] = bucket_begin[q] + count;
+  }
+  std::vector<std::uint32_t> in_order, by_colour[backend::BlockColouring::kColours];
+  std::vector<std::uint8_t> occupied_expected(blocks, 0);
+  for (std::size_t b = 0; b < blocks; ++b)
+    for (std::size_t m = 0; m < materials; ++m)
+      if (bucket_begin[m * blocks + b] != bucket_begin[m * blocks + b + 1]) {
+        int c[3];
+        box.coords(b, c);
+        in_order.push_back(std::uint32_t(b));
+        by_colour[backend::block_colour(c[0], c[1], c[2])].push_back(std::uint32_t(b));
+        occupied_expected[b] = 1;
+        break;
+      }
+  ASSERT_GT(in_order.size(), 20u);
+
+  const ParticleBlockColour colour{bucket_begin.data(), blocks, materials, box};
+  BlockCompaction<backend::BlockColouring::kColours> particle{{"count", "prefix", "write"}};
+  const auto begins = particle.count(blocks, colour, TypeParam{});
+  ASSERT_EQ(begins.back(), in_order.size());
+  AlignedVector<std::uint32_t> listed(in_order.size()), coloured(in_order.size());
+  AlignedVector<std::uint8_t> occupied(blocks, 7);
+  particle.write(ParticleBlockLists{listed.data(), coloured.data(), occupied.data()}, TypeParam{});
+  EXPECT_EQ(std::vector<std::uint32_t>(listed.begin(), listed.end()), in_order);
+  EXPECT_EQ(std::vector<std::uint8_t>(occupied.begin(), occupied.end()), occupied_expected);
+  for (int k = 0; k < backend::BlockColouring::kColours; ++k)
+    EXPECT_EQ(std::vector<std::uint32_t>(coloured.begin() + begins[std::size_t(k)], coloured.begin() + begins[std::size_t(k) + 1]),
+              by_colour[k])
+        << "colour " << k;
+
+  std::vector<std::uint32_t> active;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    int c[3];
+    box.coords(b, c);
+    bool touched = false;
+    for (int o = 0; o < 8 && !touched; ++o) {
+      const int x = c[0] - (o >> 2), y = c[1] - ((o >> 1) & 1), z = c[2] - (o & 1);
+      touched = x >= 0 && y >= 0 && z >= 0 && occupied_expected[box.id(x, y, z)];
+    }
+    if (touched) active.push_back(std::uint32_t(b));
+  }
+  const ActiveBlock is_active{occupied.data(), box};
+  BlockCompaction<1> activation{{"count", "prefix", "write"}};
+  ASSERT_EQ(activation.count(blocks, is_active, TypeParam{})[1], active.size());
+  AlignedVector<std::int32_t> map(blocks, 99);
+  AlignedVector<std::uint32_t> slots(active.size());
+  AlignedVector<int> coords(3 * active.size());
+  activation.write(ActiveBlockSlots{map.data(), slots.data(), coords.data(), box}, TypeParam{});
+  EXPECT_EQ(std::vector<std::uint32_t>(slots.begin(), slots.end()), active);
+  std::size_t mapped = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    if (map[b] < 0) {
+      ASSERT_EQ(map[b], -1) << "block " << b;
+      continue;
+    }
+    ++mapped;
+    const std::size_t s = std::size_t(map[b]);
+    ASSERT_EQ(slots[s], b);
+    int c[3];
+    box.coords(b, c);
+    EXPECT_EQ(coords[3 * s], c[0]);
+    EXPECT_EQ(coords[3 * s + 1], c[1]);
+    EXPECT_EQ(coords[3 * s + 2], c[2]);
+  }
+  EXPECT_EQ(mapped, active.size());
+}
+
 REGISTER_TYPED_TEST_SUITE_P(BackendCases, ParallelForReachesEveryItem, ParallelReduceRepeatsItsBits,
-                            StepRepeatsAndAgreesWithOpenMP);
+                            StepRepeatsAndAgreesWithOpenMP, BlockListsMatchHostLoops);
 
 }  // namespace firn

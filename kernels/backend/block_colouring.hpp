@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "kernels/hd.hpp"
+
 namespace firn::backend {
 
 struct BlockColouring {
@@ -16,6 +18,6 @@ struct BlockColouring {
 };
 
 // Parity colour of a block from its integer block coordinates.
-inline int block_colour(int bx, int by, int bz) { return (bx & 1) | ((by & 1) << 1) | ((bz & 1) << 2); }
+FIRN_HD int block_colour(int bx, int by, int bz) { return (bx & 1) | ((by & 1) << 1) | ((bz & 1) << 2); }
 
 }  // namespace firn::backend

@@ -19,9 +19,8 @@
 //     threads take the particles, and the per-block results are reduced by the fixed tree.
 // Memory: the backend's buffers are CUDA managed memory (cudaMallocManaged), which both the device
 // and the host address: pages move to the side that touches them. Every launch synchronises before
-// it returns, so the host may read what a kernel wrote, and the host code that still runs between
-// launches (collecting the occupied blocks, block activation, the reaction sums) is correct, at the
-// price of the pages it touches moving to the host and back (issue 14, item 3).
+// it returns, so the host may read what a kernel wrote (the list lengths of the block compactions,
+// the collider reactions); the block bookkeeping of a step runs as launches (issue 14, item 3).
 // With a LaunchProfile, each launch's device time is measured with CUDA events.
 #pragma once
 

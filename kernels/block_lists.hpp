@@ -1,0 +1,88 @@
+// The block lists a step builds by compaction (kernels/block_compaction.hpp) over the domain's box
+// of grid blocks, ids b = (bx * by_count + by) * bz_count + bz:
+//   ParticleBlocks  the binning's (engine/particle_binning.hpp): blocks whose bucket holds a
+//                   particle of some material, classed by parity colour; they are listed in id
+//                   order and by colour, and flagged in `occupied`;
+//   ActiveBlocks    the sparse grid's (engine/sparse_grid.hpp): blocks b + {0,1}^3 of every
+//                   particle block, the nodes P2G writes; slot s holds the s-th in id order, and
+//                   the block map takes every block's slot or -1.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "kernels/backend/block_colouring.hpp"
+#include "kernels/hd.hpp"
+
+namespace firn {
+
+struct BlockBox {
+  int count[3];
+
+  FIRN_HD void coords(std::size_t b, int c[3]) const {
+    c[0] = int(b / std::size_t(count[1] * count[2]));
+    c[1] = int(b / std::size_t(count[2])) % count[1];
+    c[2] = int(b % std::size_t(count[2]));
+  }
+  FIRN_HD std::size_t id(int x, int y, int z) const { return (std::size_t(x) * count[1] + std::size_t(y)) * count[2] + std::size_t(z); }
+};
+
+struct ParticleBlockColour {  // classify: the colour of a block holding particles, else -1
+  const std::uint32_t* bucket_begin;  // the binning's, [m * block_count + b]
+  std::size_t block_count, material_count;
+  BlockBox box;
+
+  FIRN_HD int operator()(std::size_t b) const {
+    for (std::size_t m = 0; m < material_count; ++m)
+      if (bucket_begin[m * block_count + b] != bucket_begin[m * block_count + b + 1]) {
+        int c[3];
+        box.coords(b, c);
+        return backend::block_colour(c[0], c[1], c[2]);
+      }
+    return -1;
+  }
+};
+
+struct ParticleBlockLists {  // emit
+  std::uint32_t* blocks;    // in id order
+  std::uint32_t* coloured;  // grouped by colour
+  std::uint8_t* occupied;   // [b]: 1 for a particle block
+
+  FIRN_HD void selected(std::size_t b, int, std::uint32_t by_colour, std::uint32_t in_order) const {
+    blocks[in_order] = std::uint32_t(b);
+    coloured[by_colour] = std::uint32_t(b);
+    occupied[b] = 1;
+  }
+  FIRN_HD void rejected(std::size_t b) const { occupied[b] = 0; }
+};
+
+struct ActiveBlock {  // classify: 0 for a block some particle block writes, else -1
+  const std::uint8_t* occupied;
+  BlockBox box;
+
+  FIRN_HD int operator()(std::size_t b) const {
+    int c[3];
+    box.coords(b, c);
+    for (int o = 0; o < 8; ++o) {
+      const int x = c[0] - (o >> 2), y = c[1] - ((o >> 1) & 1), z = c[2] - (o & 1);
+      if (x >= 0 && y >= 0 && z >= 0 && occupied[box.id(x, y, z)]) return 0;
+    }
+    return -1;
+  }
+};
+
+struct ActiveBlockSlots {  // emit
+  std::int32_t* map;     // [b]: slot or -1
+  std::uint32_t* slots;  // slot -> block id
+  int* coords;           // slot -> block coordinates
+  BlockBox box;
+
+  FIRN_HD void selected(std::size_t b, int, std::uint32_t, std::uint32_t slot) const {
+    map[b] = std::int32_t(slot);
+    slots[slot] = std::uint32_t(b);
+    box.coords(b, coords + 3 * std::size_t(slot));
+  }
+  FIRN_HD void rejected(std::size_t b) const { map[b] = -1; }
+};
+
+}  // namespace firn
