@@ -75,7 +75,9 @@ TEST(Camera, FollowedSubjectNeverLeavesTheViewAndTheViewGlides) {
     const Camera c = rig.next(f);
     EXPECT_TRUE(sees(c, f.subject)) << frame;
     const double distance = length(c.eye - c.target);
-    if (frame >= 7) EXPECT_GT(distance, 0.5 * previous_distance) << frame;  // narrows by at most a third per frame
+    if (frame >= 7) {
+      EXPECT_GT(distance, 0.5 * previous_distance) << frame;  // the view narrows a third of the way a frame
+    }
     previous_distance = distance;
   }
   const Camera settled = frame_camera(settings(CameraPreset::three_quarter), f.subject);
