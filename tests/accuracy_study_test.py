@@ -5,6 +5,7 @@ quick_bar: `firn study accuracy --quick --problems vibrating_bar` writes one acc
 level and method (2 levels x 12 methods) with finite errors and run times, at least one case on the
 Pareto front, accuracy.md with the problem's section, and the plot where gnuplot is installed.
 bad_problem: an unknown problem is refused with exit status 2 before anything is written.
+missing_scenes: snowball_pair_energy without its scene file is refused the same way, naming --scenes.
 """
 import csv
 import math
@@ -42,6 +43,12 @@ elif TEST == "bad_problem":
     out = fresh("bad_problem")
     r = study(out, "--problems", "no_such_problem")
     check(r.returncode == 2, "exit status %d, expected 2" % r.returncode)
+    check(not os.path.exists(out), "the study wrote %s" % out)
+elif TEST == "missing_scenes":
+    out = fresh("missing_scenes")
+    r = study(out, "--problems", "snowball_pair_energy", "--scenes", os.path.join(SCRATCH, "no_such_folder"))
+    check(r.returncode == 2, "exit status %d, expected 2" % r.returncode)
+    check("snowball_pair.toml" in r.stderr and "--scenes" in r.stderr, "unclear message: %s" % r.stderr)
     check(not os.path.exists(out), "the study wrote %s" % out)
 else:
     check(False, "unknown test " + TEST)

@@ -32,6 +32,7 @@ struct VerificationOptions {
   BackendKind backend = BackendKind::openmp;  // available here (backend_unavailable)
   int threads = 0;                            // OpenMP threads, 0: all cores
   std::ostream* log = nullptr;                // histories (energy per transfer scheme, ...) go here
+  std::string scene_folder;                   // the shipped scenes, for problems that run a scene file
 };
 
 // One run of a problem at one resolution level. `error` is the quantity the problem's comment

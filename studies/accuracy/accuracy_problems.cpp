@@ -1,5 +1,7 @@
 #include "studies/accuracy/accuracy_problems.hpp"
 
+#include "studies/accuracy/snowball_pair_energy.hpp"
+
 namespace firn::study {
 
 const std::vector<AccuracyProblem>& accuracy_problems() {
@@ -32,6 +34,11 @@ const std::vector<AccuracyProblem>& accuracy_problems() {
        "none: the same contact patch spins the cylinder less than 2 mu g cos(t) / R, and nodes that stick take friction "
        "below mu N (engine/verification/incline_rolling.cpp)",
        {0, 1}, {0}, incline_sliding_cylinder_case},
+      {"snowball_pair_energy",
+       "the energy budget's residual / initial energy at 10 ms of the thesis' snowball pair (plastic work counted)", 0,
+       "no order is stated: like the two spheres' loss, the residual is the transfer's numerical dissipation; level 0 "
+       "is the scene's --preview (studies/accuracy/snowball_pair_energy.cpp)",
+       {0, 1}, {0}, snowball_pair_energy_case},
   };
   return problems;
 }

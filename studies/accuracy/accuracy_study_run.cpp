@@ -57,6 +57,7 @@ AccuracyStudyResult run_accuracy_study(const AccuracyStudyOptions& o) {
   VerificationOptions options;
   options.backend = backend_named(o.study.backend);
   options.threads = o.study.threads;
+  options.scene_folder = o.scenes;
   const auto start = std::chrono::steady_clock::now();
   std::vector<AccuracyRow> rows;
   bool plotted = true;

@@ -20,6 +20,7 @@ namespace firn::study {
 struct AccuracyStudyOptions {
   StudyOptions study{false, "out/study/accuracy", 0};
   std::vector<std::string> problems;                      // empty: all
+  std::string scenes;                                     // the shipped scene folder (snowball_pair_energy)
   std::function<void(const std::string& line)> progress;  // one line per case
 };
 
