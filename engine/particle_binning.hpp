@@ -47,7 +47,7 @@ class ParticleBinning {
       if (materials[m].end == materials[m].begin) continue;
       const std::size_t begin = materials[m].begin;
       const std::uint32_t key0 = std::uint32_t(material_count_++ * block_count_);
-      const int b1 = blocks[1], b2 = blocks[2];
+      const BlockBox box{{blocks[0], blocks[1], blocks[2]}};
       const std::size_t bad = backend.parallel_reduce(
           "bin.keys", materials[m].end - begin, kNone,
           [=] FIRN_HD_LAMBDA(std::size_t i, std::size_t& acc) {
@@ -60,7 +60,7 @@ class ParticleBinning {
               if (!(s >= T(0) && s < T(g.nodes[d] - ShapeT::kSupport + 1))) inside = false;
               bc[d] = inside ? int(s) >> kBlockShift : 0;
             }
-            keys[p] = key0 + std::uint32_t((bc[0] * b1 + bc[1]) * b2 + bc[2]);
+            keys[p] = key0 + std::uint32_t(box.id(bc[0], bc[1], bc[2]));
             if (!inside && p < acc) acc = p;
           },
           Min{});

@@ -63,7 +63,7 @@ class SparseGrid {
   }
 
   SparseGridView<T> view() {
-    return SparseGridView<T>{data_.data(), channels_, map_.data(), {blocks_[0], blocks_[1], blocks_[2]}};
+    return SparseGridView<T>{data_.data(), channels_, map_.data(), box()};
   }
   GridSlotsView<T> slots() { return GridSlotsView<T>{data_.data(), coords_.data(), channels_}; }
   const int* slot_coords(std::size_t s) const { return coords_.data() + 3 * s; }

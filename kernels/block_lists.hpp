@@ -1,5 +1,5 @@
 // The block lists a step builds by compaction (kernels/block_compaction.hpp) over the domain's box
-// of grid blocks, ids b = (bx * by_count + by) * bz_count + bz:
+// of grid blocks (kernels/block_box.hpp):
 //   ParticleBlocks  the binning's (engine/particle_binning.hpp): blocks whose bucket holds a
 //                   particle of some material, classed by parity colour; they are listed in id
 //                   order and by colour, and flagged in `occupied`;
@@ -12,20 +12,10 @@
 #include <cstdint>
 
 #include "kernels/backend/block_colouring.hpp"
+#include "kernels/block_box.hpp"
 #include "kernels/hd.hpp"
 
 namespace firn {
-
-struct BlockBox {
-  int count[3];
-
-  FIRN_HD void coords(std::size_t b, int c[3]) const {
-    c[0] = int(b / std::size_t(count[1] * count[2]));
-    c[1] = int(b / std::size_t(count[2])) % count[1];
-    c[2] = int(b % std::size_t(count[2]));
-  }
-  FIRN_HD std::size_t id(int x, int y, int z) const { return (std::size_t(x) * count[1] + std::size_t(y)) * count[2] + std::size_t(z); }
-};
 
 struct ParticleBlockColour {  // classify: the colour of a block holding particles, else -1
   const std::uint32_t* bucket_begin;  // the binning's, [m * block_count + b]

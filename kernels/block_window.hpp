@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "kernels/block_box.hpp"
 #include "kernels/grid_geometry.hpp"
 #include "kernels/hd.hpp"
 
@@ -21,17 +22,11 @@ template <class T>
 struct SparseGridView {
   T* data;
   int channels;
-  const std::int32_t* block_map;
-  int blocks[3];
+  const std::int32_t* block_map;  // [box.id(bx, by, bz)]
+  BlockBox box;
 
   FIRN_HD T* block(int bx, int by, int bz) const {
-    return data + static_cast<long>(block_map[(bx * blocks[1] + by) * blocks[2] + bz]) * channels * kBlockNodes;
-  }
-  // Integer coordinates of block id b = (bx * blocks[1] + by) * blocks[2] + bz.
-  FIRN_HD void block_coords(std::uint32_t b, int c[3]) const {
-    c[0] = int(b) / (blocks[1] * blocks[2]);
-    c[1] = (int(b) / blocks[2]) % blocks[1];
-    c[2] = int(b) % blocks[2];
+    return data + static_cast<long>(block_map[box.id(bx, by, bz)]) * channels * kBlockNodes;
   }
 };
 

@@ -140,7 +140,7 @@ __global__ void scatter_colour(const std::uint32_t* blocks, S scatter) {
   const std::uint32_t b = blocks[blockIdx.x];
   if (threadIdx.x == 0) {
     int block[3];
-    scatter.grid.block_coords(b, block);
+    scatter.grid.box.coords(b, block);
     scratch.set_origin(block);
   }
   for (int i = threadIdx.x; i < Scratch::kNodes * S::kChannels; i += blockDim.x) scratch.values[i] = 0;
@@ -180,7 +180,7 @@ __global__ void gather_block(const std::uint32_t* blocks, G gather, Combine comb
   const std::uint32_t b = blocks[blockIdx.x];
   if (threadIdx.x == 0) {
     int block[3];
-    gather.grid.block_coords(b, block);
+    gather.grid.box.coords(b, block);
     window.set_origin(block);
   }
   __syncthreads();

@@ -45,7 +45,7 @@ struct G2PGather {
 
   FIRN_HD GuardSummary<T> operator()(std::uint32_t b) const {
     int block[3];
-    grid.block_coords(b, block);
+    grid.box.coords(b, block);
     Window window;
     window.load(grid, kFirstChannel, block);
     GuardSummary<T> summary;

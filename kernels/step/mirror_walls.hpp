@@ -121,8 +121,7 @@ FIRN_HD T* grid_node(const SparseGridView<T>& grid, const int n[3], const int no
   for (int d = 0; d < 3; ++d)
     if (n[d] < 0 || n[d] >= nodes[d]) return nullptr;
   const std::int32_t slot =
-      grid.block_map[((n[0] >> kBlockShift) * grid.blocks[1] + (n[1] >> kBlockShift)) * grid.blocks[2] +
-                     (n[2] >> kBlockShift)];
+      grid.block_map[grid.box.id(n[0] >> kBlockShift, n[1] >> kBlockShift, n[2] >> kBlockShift)];
   if (slot < 0) return nullptr;
   const int mask = kBlockSize - 1;
   return grid.data + std::size_t(slot) * std::size_t(grid.channels) * kBlockNodes +

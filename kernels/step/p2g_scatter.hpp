@@ -29,7 +29,7 @@ namespace firn {
 template <class Scatter>
 FIRN_HD void scatter_block(const Scatter& scatter, std::uint32_t b) {
   int block[3];
-  scatter.grid.block_coords(b, block);
+  scatter.grid.box.coords(b, block);
   typename Scatter::Scratch scratch;
   scratch.reset(block);
   for (std::size_t m = 0; m < scatter.bins.material_count; ++m)

@@ -67,7 +67,7 @@ struct VolumeScatter {
 
   FIRN_HD void operator()(std::uint32_t b) const {
     int block[3];
-    grid.block_coords(b, block);
+    grid.box.coords(b, block);
     Scratch scratch;
     scratch.reset(block);
     for (std::size_t m = 0; m < bins.material_count; ++m) {
@@ -115,7 +115,7 @@ struct VolumeGather {
 
   FIRN_HD std::size_t operator()(std::uint32_t b) const {
     int block[3];
-    grid.block_coords(b, block);
+    grid.box.coords(b, block);
     Window window;
     window.load(grid, kFirstChannel, block);
     std::size_t rescaled = 0;
