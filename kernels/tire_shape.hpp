@@ -74,6 +74,12 @@ struct TireShape {
 
   // Beyond this many tread depths outside the band, the bounding cylinder's distance is returned.
   static constexpr T kNear = T(2);
+  // A block is skipped when its bounding box lies farther than the best distance so far plus this
+  // many tread depths (12 um for a 12 mm tread: far above the roundings of either distance).
+  static constexpr T kSkipSlack = T(1e-3);
+
+  // The distance from x to the interval [lo, hi], 0 inside it.
+  FIRN_HD static T gap(T lo, T hi, T x) { return x < lo ? lo - x : (x > hi ? x - hi : T(0)); }
 
   // Signed distance at y (tire frame) and the outward unit normal n.
   FIRN_HD T distance(const T y[3], T n[3]) const {
@@ -115,7 +121,21 @@ struct TireShape {
     const T s = (phi - k * pitch_angle) * rho, pitch_length = pitch_angle * rho;
     for (int b = 0; b < block_count; ++b) {
       const TreadBlock<T>& blk = blocks[b];
+      T u_lo = blk.u[0], u_hi = blk.u[0], w_lo = blk.w[0], w_hi = blk.w[0];
+      for (int v = 1; v < blk.vertex_count; ++v) {
+        u_lo = blk.u[v] < u_lo ? blk.u[v] : u_lo;
+        u_hi = blk.u[v] > u_hi ? blk.u[v] : u_hi;
+        w_lo = blk.w[v] < w_lo ? blk.w[v] : w_lo;
+        w_hi = blk.w[v] > w_hi ? blk.w[v] : w_hi;
+      }
+      const T gz = gap(w_lo * width, w_hi * width, y[2]);
       for (int shift = -1; shift <= 1; ++shift) {
+        // A block whose bounding box is farther than the best distance so far cannot win: outside
+        // the box its distance is at least d2 >= the box's distance > 0. The slack keeps the skip on
+        // the safe side of rounding, so the result is the one of testing every block.
+        const T gs = gap((u_lo + T(shift)) * pitch_length, (u_hi + T(shift)) * pitch_length, s);
+        const T box2 = gs * gs + gz * gz, reach = best + kSkipSlack * tread_depth;
+        if (box2 > T(0) && (reach <= T(0) || box2 > reach * reach)) continue;
         T ps[kMaxBlockVertices], pz[kMaxBlockVertices], g[2];
         for (int v = 0; v < blk.vertex_count; ++v) {
           ps[v] = (blk.u[v] + T(shift)) * pitch_length;

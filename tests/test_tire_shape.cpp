@@ -3,6 +3,7 @@
 // defining properties.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -64,6 +65,34 @@ TEST(TireShape, SignMatchesMembershipAndNormalsAreUnit) {
     }
     EXPECT_GT(inside, 2000) << tread;
   }
+}
+
+// The distance skips blocks whose bounding box lies beyond the best distance so far; that must
+// never change the answer. The tire's distance is the least of the carcass's and each block's, so
+// it must equal, bit for bit, the least over tires that carry one block each (where only the
+// carcass can make a block be skipped), in float (the engine's precision) and double.
+template <class T>
+void expect_skipping_changes_nothing() {
+  for (const char* tread : kTreads) {
+    const TireShape<T> t = tire_shape_cast<T>(tire(tread));
+    for (const auto& p : samples(13, 20000)) {
+      const T y[3] = {T(p[0]), T(p[1]), T(p[2])};
+      T n[3];
+      T least = T(INFINITY);
+      for (int b = 0; b < t.block_count; ++b) {
+        TireShape<T> one = t;
+        one.block_count = 1;
+        one.blocks[0] = t.blocks[b];
+        least = std::min(least, one.distance(y, n));
+      }
+      ASSERT_EQ(t.distance(y, n), least) << tread << " at " << p[0] << ", " << p[1] << ", " << p[2];
+    }
+  }
+}
+
+TEST(TireShape, SkippingFarBlocksChangesNothing) {
+  expect_skipping_changes_nothing<float>();
+  expect_skipping_changes_nothing<double>();
 }
 
 // A distance function must be 1-Lipschitz; the unrolled tread's bending allows a little more.
