@@ -4,7 +4,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <ostream>
+#include <stdexcept>
 #include <string>
+#include <system_error>
+#include <vector>
 
 #include "engine/output/atomic_file.hpp"
 #include "engine/scene/scene_run.hpp"
