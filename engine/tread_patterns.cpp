@@ -7,11 +7,7 @@ namespace {
 
 TreadBlock<double> block(std::initializer_list<std::pair<double, double>> vertices) {
   TreadBlock<double> b;
-  for (const auto& [u, w] : vertices) {
-    b.u[b.vertex_count] = u;
-    b.w[b.vertex_count] = w;
-    ++b.vertex_count;
-  }
+  for (const auto& [u, w] : vertices) b.add_vertex(u, w);
   return b;
 }
 

@@ -39,6 +39,18 @@ struct TreadBlock {
   int vertex_count = 0;
   T u[kMaxBlockVertices] = {};  // circumferential, in pitch lengths
   T w[kMaxBlockVertices] = {};  // lateral, in tire widths
+  T u_lo = T(0), u_hi = T(0), w_lo = T(0), w_hi = T(0);  // the vertices' bounding box
+
+  // Vertices are added through here, which keeps the bounding box.
+  void add_vertex(T u_v, T w_v) {
+    u_lo = vertex_count == 0 || u_v < u_lo ? u_v : u_lo;
+    u_hi = vertex_count == 0 || u_v > u_hi ? u_v : u_hi;
+    w_lo = vertex_count == 0 || w_v < w_lo ? w_v : w_lo;
+    w_hi = vertex_count == 0 || w_v > w_hi ? w_v : w_hi;
+    u[vertex_count] = u_v;
+    w[vertex_count] = w_v;
+    ++vertex_count;
+  }
 };
 
 // Signed distance from p to a simple polygon (negative inside) and its gradient g: the nearest
@@ -121,19 +133,12 @@ struct TireShape {
     const T s = (phi - k * pitch_angle) * rho, pitch_length = pitch_angle * rho;
     for (int b = 0; b < block_count; ++b) {
       const TreadBlock<T>& blk = blocks[b];
-      T u_lo = blk.u[0], u_hi = blk.u[0], w_lo = blk.w[0], w_hi = blk.w[0];
-      for (int v = 1; v < blk.vertex_count; ++v) {
-        u_lo = blk.u[v] < u_lo ? blk.u[v] : u_lo;
-        u_hi = blk.u[v] > u_hi ? blk.u[v] : u_hi;
-        w_lo = blk.w[v] < w_lo ? blk.w[v] : w_lo;
-        w_hi = blk.w[v] > w_hi ? blk.w[v] : w_hi;
-      }
-      const T gz = gap(w_lo * width, w_hi * width, y[2]);
+      const T gz = gap(blk.w_lo * width, blk.w_hi * width, y[2]);
       for (int shift = -1; shift <= 1; ++shift) {
         // A block whose bounding box is farther than the best distance so far cannot win: outside
         // the box its distance is at least d2 >= the box's distance > 0. The slack keeps the skip on
         // the safe side of rounding, so the result is the one of testing every block.
-        const T gs = gap((u_lo + T(shift)) * pitch_length, (u_hi + T(shift)) * pitch_length, s);
+        const T gs = gap((blk.u_lo + T(shift)) * pitch_length, (blk.u_hi + T(shift)) * pitch_length, s);
         const T box2 = gs * gs + gz * gz, reach = best + kSkipSlack * tread_depth;
         if (box2 > T(0) && (reach <= T(0) || box2 > reach * reach)) continue;
         T ps[kMaxBlockVertices], pz[kMaxBlockVertices], g[2];
@@ -171,13 +176,8 @@ TireShape<T> tire_shape_cast(const TireShape<U>& t) {
   o.tread_depth = T(t.tread_depth);
   o.pitches = t.pitches;
   o.block_count = t.block_count;
-  for (int b = 0; b < kMaxTreadBlocks; ++b) {
-    o.blocks[b].vertex_count = t.blocks[b].vertex_count;
-    for (int v = 0; v < kMaxBlockVertices; ++v) {
-      o.blocks[b].u[v] = T(t.blocks[b].u[v]);
-      o.blocks[b].w[v] = T(t.blocks[b].w[v]);
-    }
-  }
+  for (int b = 0; b < kMaxTreadBlocks; ++b)
+    for (int v = 0; v < t.blocks[b].vertex_count; ++v) o.blocks[b].add_vertex(T(t.blocks[b].u[v]), T(t.blocks[b].w[v]));
   return o;
 }
 
