@@ -700,11 +700,17 @@ class Simulation {
       std::visit(
           [&](const auto& model) {
             using Model = std::decay_t<decltype(model)>;
-            const ConstitutiveSummary r =
-                backend_.parallel_reduce(constitutive_launch_name<Model>(), m.range.end - m.range.begin,
-                                         ConstitutiveSummary{},
-                                         ConstitutiveUpdate<T, Model>{pv, model, m.range.begin, budget_enabled_},
-                                         MergeConstitutive{});
+            const std::size_t n = m.range.end - m.range.begin;
+            const ConstitutiveUpdate<T, Model> one{pv, model, m.range.begin, budget_enabled_};
+            ConstitutiveSummary r;
+            if constexpr (HasLanes<Model>::value) {  // batches of the backend's vector width
+              using Batched = ConstitutiveUpdateLanes<T, Model, lane_width<T>(Backend::kVectorBytes)>;
+              r = backend_.parallel_reduce(constitutive_launch_name<Model>(), Batched::batches(n),
+                                           ConstitutiveSummary{}, Batched{one, n}, MergeConstitutive{});
+            } else {
+              r = backend_.parallel_reduce(constitutive_launch_name<Model>(), n, ConstitutiveSummary{}, one,
+                                           MergeConstitutive{});
+            }
             bad_stress = std::min(bad_stress, r.first_bad);
             budget_.plastic += r.plastic_work;
             m.wave_speed = std::sqrt(r.max_modulus / m.info.density);

@@ -25,3 +25,22 @@
 #else
 #define FIRN_LANES _Pragma("omp simd")
 #endif
+
+// On a kernel that works on a batch of lanes (kernels/lanes.hpp): inline everything it calls, so
+// that the lanes stay in vector registers across the small functions of Mat3 and the models
+// rather than passing through memory at every call. Nothing in device code.
+#if defined(__CUDA_ARCH__) || !defined(__GNUC__)
+#define FIRN_FLATTEN
+#else
+#define FIRN_FLATTEN __attribute__((flatten))
+#endif
+
+// On a short loop of fixed count inside a loop over lanes (a polynomial's terms): unrolled, so that
+// the lanes loop around it is innermost and vectorises.
+#if defined(__CUDACC__)
+#define FIRN_UNROLL _Pragma("unroll")
+#elif defined(__GNUC__)
+#define FIRN_UNROLL _Pragma("GCC unroll 16")
+#else
+#define FIRN_UNROLL
+#endif

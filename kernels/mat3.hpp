@@ -115,7 +115,7 @@ FIRN_HD Mat3<T> axis_angle_rotation(const Vec3<T>& axis, T angle) {
 // Frobenius inner product A : B.
 template <class T>
 FIRN_HD T ddot(const Mat3<T>& a, const Mat3<T>& b) {
-  T s = 0;
+  T s = T(0);
   for (int i = 0; i < 9; ++i) s += a.m[i] * b.m[i];
   return s;
 }

@@ -238,6 +238,7 @@ inline unsigned grid_size(std::size_t n, int threads) { return unsigned((n + std
 
 struct Cuda {
   static constexpr const char* kName = "cuda";
+  static constexpr int kVectorBytes = 0;  // lanes per batch: kernels/lanes.hpp
   LaunchProfile* profile = nullptr;
 
   int threads() const { return 1; }

@@ -15,11 +15,13 @@
 #include "kernels/backend/memory_space.hpp"
 #include "kernels/backend/reduce_chunks.hpp"
 #include "kernels/backend/schedule.hpp"
+#include "kernels/lanes.hpp"
 
 namespace firn::backend {
 
 struct OpenMP {
   static constexpr const char* kName = "openmp";
+  static constexpr int kVectorBytes = kHostVectorBytes;  // lanes per batch: kernels/lanes.hpp
   // Launches with fewer items run on the calling thread: waking the team costs more than they do.
   static constexpr long kMinParallelItems = 4096;
   static constexpr long kMinParallelBlocks = 64;

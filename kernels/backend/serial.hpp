@@ -11,11 +11,13 @@
 #include "kernels/backend/memory_space.hpp"
 #include "kernels/backend/reduce_chunks.hpp"
 #include "kernels/backend/schedule.hpp"
+#include "kernels/lanes.hpp"
 
 namespace firn::backend {
 
 struct Serial {
   static constexpr const char* kName = "serial";
+  static constexpr int kVectorBytes = kHostVectorBytes;  // lanes per batch: kernels/lanes.hpp
   LaunchProfile* profile = nullptr;
 
   int threads() const { return 1; }

@@ -27,6 +27,7 @@
 
 #include "kernels/float_limits.hpp"
 #include "kernels/hd.hpp"
+#include "kernels/lanes.hpp"
 #include "kernels/mat3.hpp"
 
 namespace firn {
@@ -65,22 +66,26 @@ struct SqrtSeriesRadius<double> {
   static constexpr double kSquared = 6.25e-8;
 };
 
+// The binomial series sqrt(I + E) = I + E/2 - E^2/8 + E^3/16 (two matrix products), within its
+// radius SqrtSeriesRadius; V is T or Lanes of T (kernels/lanes.hpp).
+template <class V>
+FIRN_HD Mat3<V> sqrt_near_identity(const Mat3<V>& E) {
+  Mat3<V> S = V(1) / V(16) * E;
+  for (int d = 0; d < 3; ++d) S(d, d) -= V(1) / V(8);
+  S = E * S;
+  for (int d = 0; d < 3; ++d) S(d, d) += V(0.5);
+  S = E * S;
+  for (int d = 0; d < 3; ++d) S(d, d) += V(1);
+  return S;
+}
+
 // sqrt(A) of a symmetric positive definite A. Near the identity, where a plastic step of snow
-// almost always lands, the series sqrt(I + E) = I + E/2 - E^2/8 + E^3/16 (two matrix products);
-// elsewhere the closed form of Hoger and Carlson (1984).
+// almost always lands, the series above; elsewhere the closed form of Hoger and Carlson (1984).
 template <class T>
 FIRN_HD Mat3<T> spd_sqrt(const Mat3<T>& A) {
   Mat3<T> E = A;
   for (int d = 0; d < 3; ++d) E(d, d) -= T(1);
-  if (ddot(E, E) < SqrtSeriesRadius<T>::kSquared) {
-    Mat3<T> S = T(1) / T(16) * E;
-    for (int d = 0; d < 3; ++d) S(d, d) -= T(1) / T(8);
-    S = E * S;
-    for (int d = 0; d < 3; ++d) S(d, d) += T(0.5);
-    S = E * S;
-    for (int d = 0; d < 3; ++d) S(d, d) += T(1);
-    return S;
-  }
+  if (ddot(E, E) < SqrtSeriesRadius<T>::kSquared) return sqrt_near_identity(E);
   const Vec3<T> e = symmetric_eigenvalues(A);
   T l[3];
   for (int d = 0; d < 3; ++d) l[d] = std::sqrt(e[d] > T(0) ? e[d] : T(0));
@@ -122,6 +127,45 @@ FIRN_HD Mat3<T> rescale_isochoric_deviator(const Mat3<T>& F_tr, T Jm23, T Ibar, 
   // det F = J_new up to one rounding: det sqrt(A) = 1 and stretch^3 = J_new / J_tr up to a few
   // roundings e, which the factor cbrt(1 + e) = 1 + e / 3 + O(e^2) removes.
   return ((T(2) + J_new / determinant(F)) / T(3)) * F;
+}
+
+// rescale_isochoric_deviator on W lanes (kernels/lanes.hpp) for a volume-preserving return (J_new =
+// J_tr, stretch 1), the J2 return's case: the same Newton iteration for x, run until every lane in
+// `active` has converged, and sqrt(A) by the series only. Lanes outside the series' radius, or not
+// converged in kMaxSteps, are cleared in `ok` for the caller's scalar path.
+template <class T, int W>
+FIRN_HD Mat3<Lanes<T, W>> rescale_isochoric_deviator_lanes(const Mat3<Lanes<T, W>>& F_tr, const Lanes<T, W>& Jm23,
+                                                          const Lanes<T, W>& Ibar, const Lanes<T, W>& keep,
+                                                          const Lanes<T, W>& J, const LaneMask<W>& active,
+                                                          LaneMask<W>& ok) {
+  using L = Lanes<T, W>;
+  constexpr int kMaxSteps = 8;
+  const Mat3<L> b = mul_transposed(F_tr, F_tr);
+  Mat3<L> D = Jm23 * b;
+  for (int d = 0; d < 3; ++d) D(d, d) -= Ibar;
+  const L k2j2 = keep * keep * ddot(D, D) / L(T(2)), k3d = keep * keep * keep * determinant(D);
+  L x = Ibar;
+  LaneMask<W> done = !active || !ok;
+  for (int it = 0; it < kMaxSteps && any(!done); ++it) {
+    const L h = x * x * x - x * k2j2 + k3d - L(T(1));
+    const L step = h / (L(T(3)) * x * x - k2j2);
+    x = select(done, x, x - step);
+    done = done || !(step > L(T(4) * FloatLimits<T>::kEpsilon) * x);
+  }
+  ok = ok && done;
+  Mat3<L> P = keep * D, Q = D;
+  for (int d = 0; d < 3; ++d) {
+    P(d, d) += x;
+    Q(d, d) += Ibar;
+  }
+  const Mat3<L> A = P * inverse(Q);
+  Mat3<L> E;  // A - I, symmetrised against rounding
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) E(r, c) = L(T(0.5)) * (A(r, c) + A(c, r));
+  for (int d = 0; d < 3; ++d) E(d, d) -= L(T(1));
+  ok = ok && ddot(E, E) < L(SqrtSeriesRadius<T>::kSquared);
+  const Mat3<L> F = sqrt_near_identity(E) * F_tr;
+  return ((L(T(2)) + J / determinant(F)) / L(T(3))) * F;
 }
 
 }  // namespace firn

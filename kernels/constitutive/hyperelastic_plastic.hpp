@@ -39,6 +39,7 @@
 #include "kernels/constitutive/mooney_rivlin.hpp"
 #include "kernels/constitutive/plastic_state.hpp"
 #include "kernels/hd.hpp"
+#include "kernels/lanes.hpp"
 #include "kernels/mat3.hpp"
 
 namespace firn {
@@ -47,6 +48,7 @@ template <class T>
 struct HyperelasticPlastic {
   static constexpr const char* kName = "hyperelastic_plastic";
   static constexpr bool kPlastic = true, kUsesAlpha = true, kUsesJp = false;
+  static constexpr bool kLanes = true;  // project_lanes, kirchhoff_lanes
   MooneyRivlin<T> elastic;
   J2Hardening<T> hardening;
 
@@ -97,6 +99,50 @@ struct HyperelasticPlastic {
     // Step 3: dev(bbar_e) = (1 - beta) dev(bbar_tr) at the same J (kernels/constitutive/deviator_rescale.hpp).
     F = rescale_isochoric_deviator(F, Jm23, Ibar, keep, J, T(1));
     return true;
+  }
+
+  // project() and plastic_work() on W particles at once (kernels/lanes.hpp), the lane form of the
+  // same return: Newton without bisection for dgamma (solve_j2_return_lanes), the series square root
+  // (rescale_isochoric_deviator_lanes), J^(-1/3) and the power law by lane arithmetic
+  // (kernels/lane_math.hpp) instead of the C library. Returns the lanes that yielded; their F,
+  // alpha and plastic work density are updated. A lane outside that common case (J <= 0, a
+  // softening law that leaves Newton's bracket, a large step beyond the series' radius) is cleared
+  // in `ok` with its values undefined, and the caller projects it with project().
+  template <int W>
+  FIRN_HD LaneMask<W> project_lanes(Mat3<Lanes<T, W>>& F, Lanes<T, W>& alpha, Lanes<T, W>& work,
+                                    LaneMask<W>& ok) const {
+    using L = Lanes<T, W>;
+    const L J = determinant(F);
+    ok = ok && J > L(T(0));
+    const Mat3<L> b = mul_transposed(F, F);
+    const L Jm23 = pow_minus_two_thirds(J);
+    const L third_trace = trace(b) / L(T(3));
+    const L Ibar = Jm23 * third_trace;
+    Mat3<L> dev = b;
+    for (int d = 0; d < 3; ++d) dev(d, d) -= third_trace;
+    const L s_norm = L(elastic.G1) * Jm23 * sqrt(ddot(dev, dev));
+    const L sqrt23(std::sqrt(T(2) / T(3)));
+    L sigma_n, slope;
+    hardening.evaluate(alpha, sigma_n, slope, ok);
+    const LaneMask<W> yields = ok && s_norm - sqrt23 * sigma_n > L(T(0));  // step 1
+    if (!any(yields)) return yields;
+
+    const L mu_bar = L(elastic.G1) * Ibar;  // step 2
+    L sigma_end;
+    const L dgamma = solve_j2_return_lanes(hardening, alpha, s_norm, mu_bar, yields, ok, sigma_end);
+    const L keep = L(T(1)) - L(T(2)) * mu_bar * dgamma / s_norm;
+    const L alpha_end = alpha + sqrt23 * dgamma;
+    const Mat3<L> F_end = rescale_isochoric_deviator_lanes(F, Jm23, Ibar, keep, J, yields, ok);  // step 3
+    const LaneMask<W> plastic = yields && ok;
+    work = select(plastic, L(T(0.5)) * (sigma_n + sigma_end) * (alpha_end - alpha), L(T(0)));
+    alpha = select(plastic, alpha_end, alpha);
+    for (int q = 0; q < 9; ++q) F.m[q] = select(plastic, F_end.m[q], F.m[q]);
+    return plastic;
+  }
+
+  template <int W>
+  FIRN_HD Mat3<Lanes<T, W>> kirchhoff_lanes(const Mat3<Lanes<T, W>>& F) const {
+    return elastic.kirchhoff_of(F);
   }
 };
 

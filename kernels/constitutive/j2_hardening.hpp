@@ -12,6 +12,8 @@
 
 #include "kernels/float_limits.hpp"
 #include "kernels/hd.hpp"
+#include "kernels/lane_math.hpp"
+#include "kernels/lanes.hpp"
 
 namespace firn {
 
@@ -50,6 +52,27 @@ struct J2Hardening {
       sigma = sigma_y_min;
       slope = T(0);
     }
+  }
+
+  // evaluate() on W lanes (kernels/lanes.hpp), the power law by pow_lanes; `ok` is cleared where
+  // pow_lanes cannot take the base.
+  template <int W>
+  FIRN_HD void evaluate(const Lanes<T, W>& alpha, Lanes<T, W>& sigma, Lanes<T, W>& slope, LaneMask<W>& ok) const {
+    using L = Lanes<T, W>;
+    if (law == HardeningLaw::linear) {
+      sigma = L(sigma_y0) + L(E_p) * alpha;
+      slope = L(E_p);
+    } else {
+      const L base = L(T(1)) + L(K_h) * alpha;
+      const LaneMask<W> positive = base > L(T(0));
+      const L safe = select(positive, base, L(T(1)));
+      const L p = pow_lanes(safe, n, ok);
+      sigma = select(positive, L(sigma_y0) * p, L(T(0)));
+      slope = select(positive, L(sigma_y0 * n * K_h) * p / safe, L(T(0)));
+    }
+    const LaneMask<W> floored = !(sigma > L(sigma_y_min));
+    sigma = select(floored, L(sigma_y_min), sigma);
+    slope = select(floored, L(T(0)), slope);
   }
 
   FIRN_HD T yield_stress(T alpha) const {
@@ -98,6 +121,34 @@ FIRN_HD J2ReturnSolution<T> solve_j2_return(const J2Hardening<T>& h, T alpha_n, 
     x = (newton > lo && newton < hi) ? newton : T(0.5) * (lo + hi);
   }
   return {x, kMaxIterations};
+}
+
+// solve_j2_return on W lanes at once, for the lanes in `active`: plain Newton steps from dgamma = 0
+// until every active lane's |f| or step is at rounding. It takes no bisection, so a lane whose
+// iterate leaves the bracket [0, s_norm / (2 mu_bar)] (a softening law) or that has not converged
+// in kMaxSteps is cleared in `ok`, for the caller to return by the scalar solver. sigma_end is
+// sigma_y at the returned dgamma (for the plastic work).
+template <class T, int W>
+FIRN_HD Lanes<T, W> solve_j2_return_lanes(const J2Hardening<T>& h, const Lanes<T, W>& alpha_n,
+                                          const Lanes<T, W>& s_norm, const Lanes<T, W>& mu_bar,
+                                          const LaneMask<W>& active, LaneMask<W>& ok, Lanes<T, W>& sigma_end) {
+  using L = Lanes<T, W>;
+  constexpr T kEps = FloatLimits<T>::kEpsilon;
+  constexpr int kMaxSteps = 8;
+  const L sqrt23(std::sqrt(T(2) / T(3))), two_mu = L(T(2)) * mu_bar;
+  L x(T(0));
+  LaneMask<W> done = !active;  // and, below, lanes the hardening law cannot evaluate
+  for (int it = 0; it < kMaxSteps; ++it) {
+    L slope;
+    h.evaluate(alpha_n + sqrt23 * x, sigma_end, slope, ok);
+    const L f = s_norm - two_mu * x - sqrt23 * sigma_end;
+    const L step = f / (-two_mu - L(T(2) / T(3)) * slope);
+    done = done || !ok || abs(f) <= L(T(4) * kEps) * s_norm || abs(step) <= L(T(2) * kEps) * x;
+    if (!any(!done)) break;
+    x = select(done, x, x - step);
+  }
+  ok = ok && done && !(x < L(T(0))) && !(two_mu * x > s_norm);
+  return x;
 }
 
 }  // namespace firn

@@ -12,6 +12,7 @@
 
 #include "kernels/constitutive/plastic_state.hpp"
 #include "kernels/hd.hpp"
+#include "kernels/lane_math.hpp"
 #include "kernels/mat3.hpp"
 
 namespace firn {
@@ -26,17 +27,21 @@ struct MooneyRivlin {
 
   FIRN_HD T p_wave_modulus(const PlasticState<T>& = {}) const { return K + T(4) / T(3) * (G1 + G2); }
 
-  FIRN_HD Mat3<T> kirchhoff(const Mat3<T>& F, const PlasticState<T>& = {}) const {
-    const Mat3<T> B = mul_transposed(F, F);
-    const T J = determinant(F);
-    const T Jm23 = T(1) / (std::cbrt(J) * std::cbrt(J));
-    const T I1 = trace(B);
-    Mat3<T> tau = (G1 * Jm23) * B;
-    T diag = K / T(2) * (J * J - T(1)) - G1 * Jm23 * I1 / T(3);
+  FIRN_HD Mat3<T> kirchhoff(const Mat3<T>& F, const PlasticState<T>& = {}) const { return kirchhoff_of(F); }
+
+  // The stress of F, where V is T or Lanes of T (kernels/lanes.hpp): W particles at once.
+  template <class V>
+  FIRN_HD Mat3<V> kirchhoff_of(const Mat3<V>& F) const {
+    const Mat3<V> B = mul_transposed(F, F);
+    const V J = determinant(F);
+    const V Jm23 = pow_minus_two_thirds(J);
+    const V I1 = trace(B);
+    Mat3<V> tau = (V(G1) * Jm23) * B;
+    V diag = V(K / T(2)) * (J * J - V(T(1))) - V(G1) * Jm23 * I1 / V(T(3));
     if (G2 != T(0)) {
-      const Mat3<T> A = I1 * B - B * B;  // dev(A) with tr A = I1^2 - tr(B^2)
-      tau = tau + (G2 * Jm23 * Jm23) * A;
-      diag -= G2 * Jm23 * Jm23 * trace(A) / T(3);
+      const Mat3<V> A = I1 * B - B * B;  // dev(A) with tr A = I1^2 - tr(B^2)
+      tau = tau + (V(G2) * Jm23 * Jm23) * A;
+      diag -= V(G2) * Jm23 * Jm23 * trace(A) / V(T(3));
     }
     for (int d = 0; d < 3; ++d) tau(d, d) += diag;
     return tau;

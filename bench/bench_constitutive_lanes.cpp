@@ -1,0 +1,84 @@
+// Microbenchmark of the whole constitutive update of yielding snow (return mapping, stress, write
+// back; kernels/step/constitutive_update.hpp), one particle at a time (ConstitutiveUpdate) against
+// batches of the host's vector width (ConstitutiveUpdateLanes, issue 15), float, one thread, on
+// 65,536 particles of thesis_hard_snow in a step's state: a trial state returned to the yield
+// surface, then an increment F <- (I + G) F with |G_ij| <= 2e-3 (fixed seed), so that nearly every
+// particle yields again, as the snow of the tire scenes does at every step. Items are particles.
+//   build/release/bench/firn_bench_kernels --benchmark_filter=constitutive
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <vector>
+
+#include "engine/materials.hpp"
+#include "engine/particle_storage.hpp"
+#include "kernels/step/constitutive_update.hpp"
+
+namespace firn {
+namespace {
+
+constexpr int kParticles = 1 << 16;
+using Model = HyperelasticPlastic<float>;
+
+struct StepStates {
+  Model model;
+  std::vector<Mat3<float>> F;
+};
+
+const StepStates& step_states() {
+  static const StepStates states = [] {
+    StepStates s{std::get<Model>(make_material_model<float>(preset_material_info("thesis_hard_snow"))), {}};
+    std::mt19937_64 rng(20261127);
+    std::uniform_real_distribution<double> noise(-0.25, 0.25);
+    std::uniform_real_distribution<float> increment(-2e-3f, 2e-3f);
+    s.F.resize(kParticles);
+    for (auto& f : s.F) {
+      Mat3<double> d = Mat3<double>::identity();
+      for (double& x : d.m) x += noise(rng);
+      d = std::cbrt(1.0 / determinant(d)) * d;
+      for (int q = 0; q < 9; ++q) f.m[q] = float(d.m[q]);
+      PlasticState<float> state{0.01f};
+      s.model.project(f, state);
+      Mat3<float> G = Mat3<float>::identity();
+      for (float& x : G.m) x += increment(rng);
+      f = G * f;
+    }
+    return s;
+  }();
+  return states;
+}
+
+void BM_ConstitutiveUpdate(benchmark::State& state, bool lanes) {
+  const StepStates& s = step_states();
+  ParticleStorage<float> storage;
+  storage.enable(Attribute::alpha);
+  storage.resize(kParticles);
+  const ParticleView<float> pv = storage.view();
+  constexpr int W = lane_width<float>(kHostVectorBytes);
+  const ConstitutiveUpdate<float, Model> one{pv, s.model, 0, true};
+  const ConstitutiveUpdateLanes<float, Model, W> batched{one, kParticles};
+  for (auto _ : state) {
+    state.PauseTiming();
+    for (int p = 0; p < kParticles; ++p) {
+      for (int q = 0; q < 9; ++q) pv.F[q][p] = s.F[p].m[q];
+      pv.alpha[p] = 0.01f;
+      pv.vol0[p] = 1e-6f;
+    }
+    state.ResumeTiming();
+    ConstitutiveSummary acc;
+    if (lanes)
+      for (std::size_t b = 0; b < batched.batches(kParticles); ++b) batched(b, acc);
+    else
+      for (std::size_t i = 0; i < std::size_t(kParticles); ++i) one(i, acc);
+    benchmark::DoNotOptimize(acc);
+  }
+  state.SetItemsProcessed(state.iterations() * kParticles);
+  state.counters["lanes"] = lanes ? W : 1;
+}
+
+const bool registered = (benchmark::RegisterBenchmark("constitutive/hyperelastic_plastic/scalar", BM_ConstitutiveUpdate, false),
+                         benchmark::RegisterBenchmark("constitutive/hyperelastic_plastic/lanes", BM_ConstitutiveUpdate, true),
+                         true);
+
+}  // namespace
+}  // namespace firn

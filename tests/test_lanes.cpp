@@ -1,0 +1,214 @@
+// The lane form of the constitutive update (kernels/lanes.hpp, kernels/lane_math.hpp,
+// HyperelasticPlastic::project_lanes, ConstitutiveUpdateLanes): the lane functions against the C
+// library, the lane return against the scalar one, and a particle's result independent of its batch.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "engine/materials.hpp"
+#include "engine/particle_storage.hpp"
+#include "kernels/lane_math.hpp"
+#include "kernels/step/constitutive_update.hpp"
+
+namespace firn {
+namespace {
+
+constexpr int kW = lane_width<float>(kHostVectorBytes);
+
+template <class T>
+T relative_error(T a, T b) {
+  return std::fabs(a - b) / std::fabs(b);
+}
+
+// A lane function against the C library's, over [lo, hi] in geometric steps.
+template <class T, class LaneFunction, class Reference>
+void check_against(LaneFunction lanes, Reference reference, double lo, double hi) {
+  constexpr int W = lane_width<T>(kHostVectorBytes);
+  T worst = 0;
+  for (double x = lo; x < hi; x *= 1.0137) {
+    const Lanes<T, W> y = lanes(Lanes<T, W>(T(x)));
+    worst = std::max(worst, relative_error(y.v[0], reference(T(x))));
+  }
+  EXPECT_LT(worst, T(4) * std::numeric_limits<T>::epsilon());
+}
+
+template <class T>
+void check_roots() {
+  constexpr int W = lane_width<T>(kHostVectorBytes);
+  using L = Lanes<T, W>;
+  check_against<T>([](const L& x) { return inverse_cbrt(x); }, [](T x) { return T(1) / std::cbrt(x); }, 1e-6, 1e6);
+  check_against<T>([](const L& x) { return sqrt(x); }, [](T x) { return std::sqrt(x); }, 1e-12, 1e12);
+  EXPECT_EQ(sqrt(L(T(0))).v[0], T(0));
+}
+
+TEST(LaneMath, RootsFloat) { check_roots<float>(); }
+TEST(LaneMath, RootsDouble) { check_roots<double>(); }
+
+template <class T>
+void check_pow() {
+  constexpr int W = lane_width<T>(kHostVectorBytes);
+  T worst = 0;
+  for (const T n : {T(0.02), T(0.5), T(2.5), T(-1.3)})
+    for (double x = 1e-3; x < 1e3; x *= 1.0213) {
+      LaneMask<W> ok = LaneMask<W>::all();
+      const Lanes<T, W> p = pow_lanes(Lanes<T, W>(T(x)), n, ok);
+      ASSERT_TRUE(ok.m[0]) << x;
+      // pow's condition number is |n ln x|: an error of one rounding in ln x is that relative error.
+      worst = std::max(worst, relative_error(p.v[0], std::pow(T(x), n)) / T(1 + std::fabs(n * std::log(x))));
+    }
+  EXPECT_LT(worst, T(4) * std::numeric_limits<T>::epsilon());
+  LaneMask<W> ok = LaneMask<W>::all();
+  Lanes<T, W> x(T(2));
+  x.v[0] = T(0);
+  if (W > 1) x.v[1] = T(-1);
+  pow_lanes(x, T(2000), ok);  // 2^2000 overflows T
+  EXPECT_FALSE(ok.m[0]);
+  for (int l = 1; l < W && l < 3; ++l) EXPECT_FALSE(ok.m[l]) << l;
+}
+
+TEST(LaneMath, PowerFloat) { check_pow<float>(); }
+TEST(LaneMath, PowerDouble) { check_pow<double>(); }
+
+// Trial states that yield by far: F = I + noise, scaled to J in [0.5, 1] (as
+// bench/bench_return_mapping.cpp). Their returns step beyond the series' radius.
+std::vector<Mat3<float>> trial_states(int count, double noise_amplitude = 0.25) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> noise(-noise_amplitude, noise_amplitude), volume(0.5, 1.0);
+  std::vector<Mat3<float>> F(count);
+  for (auto& f : F) {
+    Mat3<double> d = Mat3<double>::identity();
+    for (double& x : d.m) x += noise(rng);
+    d = std::cbrt(volume(rng) / determinant(d)) * d;
+    for (int q = 0; q < 9; ++q) f.m[q] = float(d.m[q]);
+  }
+  return F;
+}
+
+const HyperelasticPlastic<float>& hard_snow() {
+  static const MaterialModel<float> any = make_material_model<float>(preset_material_info("thesis_hard_snow"));
+  return std::get<HyperelasticPlastic<float>>(any);
+}
+
+// A step of snow: a state on the yield surface (a returned trial state) after an increment
+// F <- (I + G) F with |G_ij| <= 2e-3, as a step's velocity gradient times dt. Most yield again.
+std::vector<Mat3<float>> step_states(int count) {
+  std::vector<Mat3<float>> F = trial_states(count);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<float> increment(-2e-3f, 2e-3f);
+  for (auto& f : F) {
+    PlasticState<float> s{0.01f};
+    hard_snow().project(f, s);
+    Mat3<float> G = Mat3<float>::identity();
+    for (float& x : G.m) x += increment(rng);
+    f = G * f;
+  }
+  return F;
+}
+
+// Lane return against the scalar one, for a step's increments (all on the lane path) and for large
+// ones (beyond the series' radius, which the lane form hands back to the scalar return).
+void check_lane_return(const std::vector<Mat3<float>>& trial, bool steps) {
+  const HyperelasticPlastic<float>& model = hard_snow();
+  int handed_back = 0, plastic = 0;
+  for (std::size_t first = 0; first < trial.size(); first += kW) {
+    Mat3<Lanes<float, kW>> F;
+    Lanes<float, kW> alpha(0.01f), work(0.f);
+    for (int l = 0; l < kW; ++l)
+      for (int q = 0; q < 9; ++q) F.m[q].v[l] = trial[first + l].m[q];
+    LaneMask<kW> ok = LaneMask<kW>::all();
+    const LaneMask<kW> yielded = model.project_lanes(F, alpha, work, ok);
+    for (int l = 0; l < kW; ++l) {
+      if (!ok.m[l]) {
+        ++handed_back;
+        continue;
+      }
+      Mat3<float> f = trial[first + l];
+      PlasticState<float> s{0.01f};
+      float w = 0;
+      const bool scalar_yielded = project_measuring_work(model, f, s, &w);
+      ASSERT_EQ(yielded.m[l] != 0, scalar_yielded);
+      plastic += scalar_yielded;
+      for (int q = 0; q < 9; ++q) EXPECT_NEAR(F.m[q].v[l], f.m[q], 2e-6f) << q;
+      EXPECT_NEAR(alpha.v[l], s.alpha, 1e-5f * s.alpha);
+      EXPECT_NEAR(work.v[l], w, 1e-4f * std::fabs(w) + 1e-3f);
+      Mat3<float> returned;
+      for (int q = 0; q < 9; ++q) returned.m[q] = F.m[q].v[l];
+      if (scalar_yielded) {  // on the yield surface after the return, up to rounding
+        EXPECT_LT(std::fabs(model.yield_function(returned, PlasticState<float>{alpha.v[l]})),
+                  1e-5f * model.elastic.G1);  // a strain of 1e-5, some 20 float roundings
+      }
+      const Mat3<float> tau_scalar = model.kirchhoff(f);
+      Mat3<Lanes<float, kW>> Fl;
+      for (int q = 0; q < 9; ++q) Fl.m[q] = Lanes<float, kW>(F.m[q].v[l]);
+      const Mat3<Lanes<float, kW>> tau = model.kirchhoff_lanes(Fl);
+      for (int q = 0; q < 9; ++q) EXPECT_NEAR(tau.m[q].v[0], tau_scalar.m[q], 2e-6f * model.p_wave_modulus());
+    }
+  }
+  if (steps) {
+    EXPECT_EQ(handed_back, 0);
+    EXPECT_GT(plastic, int(trial.size()) / 4);
+  } else {
+    EXPECT_EQ(handed_back, int(trial.size()));
+  }
+}
+
+TEST(LaneReturn, StepsMatchTheScalarReturn) { check_lane_return(step_states(64 * kW), true); }
+TEST(LaneReturn, LargeReturnsAreHandedBack) { check_lane_return(trial_states(64 * kW), false); }
+
+// The batched update against the scalar one over particles that are not a whole number of
+// batches, and each particle's result independent of the batch it falls in (the range shifted by
+// one particle).
+TEST(LaneReturn, BatchedUpdateIsTheScalarUpdateAndIndependentOfBatching) {
+  const HyperelasticPlastic<float>& model = hard_snow();
+  const int n = 5 * kW + 3;
+  std::vector<Mat3<float>> trial = step_states(n + 1);
+  const std::vector<Mat3<float>> large = trial_states(n + 1);
+  for (int p = 0; p <= n; p += 7) trial[p] = large[p];  // some lanes of each batch take the scalar path
+  auto run = [&](bool lanes, std::size_t begin) {
+    ParticleStorage<float> storage;
+    storage.enable(Attribute::alpha);
+    storage.resize(n + 1);
+    ParticleView<float> pv = storage.view();
+    for (int p = 0; p <= n; ++p) {
+      for (int q = 0; q < 9; ++q) pv.F[q][p] = trial[p].m[q];
+      pv.alpha[p] = 0.02f;
+      pv.vol0[p] = 1e-6f;
+    }
+    const ConstitutiveUpdate<float, HyperelasticPlastic<float>> one{pv, model, begin, true};
+    const std::size_t count = std::size_t(n + 1) - begin;
+    ConstitutiveSummary acc;
+    if (lanes) {
+      const ConstitutiveUpdateLanes<float, HyperelasticPlastic<float>, kW> batched{one, count};
+      for (std::size_t b = 0; b < batched.batches(count); ++b) batched(b, acc);
+    } else {
+      for (std::size_t i = 0; i < count; ++i) one(i, acc);
+    }
+    std::vector<float> out;
+    for (int p = int(begin); p <= n; ++p) {
+      for (int q = 0; q < 9; ++q) out.push_back(pv.F[q][p]);
+      for (int c = 0; c < 6; ++c) out.push_back(pv.tau[c][p]);
+      out.push_back(pv.alpha[p]);
+    }
+    return std::make_pair(out, acc);
+  };
+  const auto scalar = run(false, 0), batched = run(true, 0), shifted = run(true, 1);
+  ASSERT_EQ(scalar.first.size(), batched.first.size());
+  // F to 2e-6, tau to the stress of a strain of 2e-6 (some 30 float roundings), alpha to 1e-5.
+  const float tau_tolerance = 2e-6f * model.p_wave_modulus();
+  for (std::size_t k = 0; k < scalar.first.size(); ++k) {
+    const std::size_t field = k % 16;
+    const float tolerance = field < 9 ? 2e-6f : field < 15 ? tau_tolerance : 1e-5f * scalar.first[k];
+    EXPECT_NEAR(batched.first[k], scalar.first[k], tolerance) << "particle " << k / 16 << " field " << field;
+  }
+  EXPECT_NEAR(batched.second.plastic_work, scalar.second.plastic_work, 1e-4 * scalar.second.plastic_work);
+  EXPECT_GT(scalar.second.plastic_work, 0);
+  EXPECT_EQ(batched.second.max_modulus, scalar.second.max_modulus);
+  EXPECT_EQ(batched.second.first_bad, kNoParticle);
+  for (std::size_t k = 0; k < shifted.first.size(); ++k)  // particle p at index p - 1
+    EXPECT_EQ(shifted.first[k], batched.first[k + 16]) << k;
+}
+
+}  // namespace
+}  // namespace firn
