@@ -36,6 +36,7 @@
 #include "engine/state_stream.hpp"
 #include "engine/sparse_grid.hpp"
 #include "engine/stability_guard.hpp"
+#include "kernels/backend/reduce_chunks.hpp"
 #include "kernels/binning_view.hpp"
 #include "kernels/body_acceleration.hpp"
 #include "kernels/boundary_conditions.hpp"
@@ -705,8 +706,11 @@ class Simulation {
             ConstitutiveSummary r;
             if constexpr (HasLanes<Model>::value) {  // batches of the backend's vector width
               using Batched = ConstitutiveUpdateLanes<T, Model, lane_width<T>(Backend::kVectorBytes)>;
+              // Chunks of kReduceGrain particles, not batches: a material of a few chunks of
+              // batches would leave threads idle.
               r = backend_.parallel_reduce(constitutive_launch_name<Model>(), Batched::batches(n),
-                                           ConstitutiveSummary{}, Batched{one, n}, MergeConstitutive{});
+                                           ConstitutiveSummary{}, Batched{one, n}, MergeConstitutive{},
+                                           Batched::batches(backend::kReduceGrain));
             } else {
               r = backend_.parallel_reduce(constitutive_launch_name<Model>(), n, ConstitutiveSummary{}, one,
                                            MergeConstitutive{});

@@ -255,8 +255,10 @@ struct Cuda {
   }
 
   // f(i, acc) accumulates item i into acc; combine(acc, partial) merges; init is combine's identity.
+  // The partition depends on n only (see the top of this file): the CPU backends' grain is unused.
   template <class R, class F, class Combine>
-  R parallel_reduce(const char* name, std::size_t n, R init, const F& f, const Combine& combine) const {
+  R parallel_reduce(const char* name, std::size_t n, R init, const F& f, const Combine& combine,
+                    std::size_t /*grain*/ = 0) const {
     R result = init;
     launch(name, [&] { result = reduce(n, init, f, combine); });
     return result;

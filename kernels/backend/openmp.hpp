@@ -49,12 +49,13 @@ struct OpenMP {
   }
 
   template <class R, class F, class Combine>
-  R parallel_reduce(const char* name, std::size_t n, R init, F&& f, Combine&& combine) const {
+  R parallel_reduce(const char* name, std::size_t n, R init, F&& f, Combine&& combine,
+                    std::size_t grain = kReduceGrain) const {
     ScopedLaunch timer(profile, name);
-    const long chunks = static_cast<long>(reduce_chunk_count(n));
+    const long chunks = static_cast<long>(reduce_chunk_count(n, grain));
     std::vector<R> partial(static_cast<std::size_t>(chunks), init);
 #pragma omp parallel for num_threads(thread_count) schedule(static) if (chunks > 1)
-    for (long c = 0; c < chunks; ++c) reduce_chunk(static_cast<std::size_t>(c), n, partial[c], f);
+    for (long c = 0; c < chunks; ++c) reduce_chunk(static_cast<std::size_t>(c), n, grain, partial[c], f);
     R result = init;
     for (const R& p : partial) combine(result, p);
     return result;

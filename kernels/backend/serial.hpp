@@ -30,14 +30,15 @@ struct Serial {
   }
 
   // f(i, acc) accumulates item i into acc; combine(acc, partial) merges; init must be the
-  // identity of combine. Deterministic: see reduce_chunks.hpp.
+  // identity of combine; grain is the items per chunk. Deterministic: see reduce_chunks.hpp.
   template <class R, class F, class Combine>
-  R parallel_reduce(const char* name, std::size_t n, R init, F&& f, Combine&& combine) const {
+  R parallel_reduce(const char* name, std::size_t n, R init, F&& f, Combine&& combine,
+                    std::size_t grain = kReduceGrain) const {
     ScopedLaunch timer(profile, name);
     R result = init;
-    for (std::size_t c = 0; c < reduce_chunk_count(n); ++c) {
+    for (std::size_t c = 0; c < reduce_chunk_count(n, grain); ++c) {
       R partial = init;
-      reduce_chunk(c, n, partial, f);
+      reduce_chunk(c, n, grain, partial, f);
       combine(result, partial);
     }
     return result;
