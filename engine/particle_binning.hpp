@@ -115,18 +115,28 @@ class ParticleBinning {
     });
   }
 
-  // True when walking the particles in block order jumps around memory often enough that
-  // reordering the arrays pays: more than one break in the order per kReorderRun particles.
+  // Whether reordering the particle arrays pays now; called once per step, after sort(). Walking
+  // the arrays in block order costs about kBreakCost per break in the order (P2G and G2P each read
+  // a part-used cache line of every column there), every step until the arrays are reordered;
+  // reordering (ParticleStorage::gather) costs about kReorderCost per particle. So reorder once the
+  // breaks summed over the steps since the last reorder have cost as much as one reorder: the
+  // rent-or-buy rule (Karlin, Manasse, Rudolph and Sleator 1988, "Competitive snoopy caching",
+  // Algorithmica 3), which for breaks that grow linearly with the steps is the reorder interval of
+  // least cost per step. A scene whose particles cross blocks fast (snowball_pair) reorders every
+  // few steps, a slow one (cube_drop) every few tens.
   template <class Backend>
-  bool needs_reorder(const Backend& backend) const {
-    static constexpr std::size_t kReorderRun = 64;
+  bool needs_reorder(const Backend& backend) {
+    // From cube_drop and snowball_pair (AMD EPYC Zen 5, 2 threads, 26 float columns): the gather
+    // took 12-13 ns per particle; reordering cube_drop at one break per 16 particles instead of
+    // 64 made P2G + G2P 1.4 ms per step slower, for an estimated 12,000 more breaks on average.
+    static constexpr double kReorderCost = 12, kBreakCost = 115;
     const std::uint32_t* order = order_.data();
     const std::size_t n = order_.size();
     if (n < 2) return false;
-    const std::size_t breaks = backend.parallel_reduce(
+    walk_breaks_ += backend.parallel_reduce(
         "bin.breaks", n - 1, std::size_t(0),
         [=] FIRN_HD_LAMBDA(std::size_t i, std::size_t& acc) { acc += order[i + 1] != order[i] + 1; }, Sum{});
-    return breaks * kReorderRun > n;
+    return double(walk_breaks_) * kBreakCost >= double(n) * kReorderCost;
   }
 
   // After the particle arrays were permuted by order(): the order is the identity.
@@ -134,7 +144,12 @@ class ParticleBinning {
   void reordered(const Backend& backend) {
     std::uint32_t* order = order_.data();
     backend.parallel_for("bin.identity", order_.size(), [=] FIRN_HD_LAMBDA(std::size_t i) { order[i] = std::uint32_t(i); });
+    walk_breaks_ = 0;
   }
+
+  // The breaks summed since the last reorder: state that decides the next reorder, and with it the
+  // order of the sums over particles, so checkpoints keep it (Simulation::save_state).
+  std::uint64_t& walk_breaks() { return walk_breaks_; }
 
   const std::uint32_t* order() const { return order_.data(); }
   // The order and the buckets of sorted positions per (non-empty material, block), for kernels.
@@ -175,6 +190,7 @@ class ParticleBinning {
   }
 
   std::size_t block_count_ = 0, material_count_ = 0;
+  std::uint64_t walk_breaks_ = 0;
   AlignedVector<std::uint32_t> keys_, order_, counts_, bucket_begin_, particle_blocks_, coloured_;
   AlignedVector<std::uint8_t> occupied_;  // [block]: 1 where particles are
   BlockCompaction<backend::BlockColouring::kColours> compaction_{{"bin.blocks.count", "bin.blocks.prefix", "bin.blocks.write"}};

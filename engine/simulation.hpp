@@ -405,7 +405,8 @@ class Simulation {
   // The state a step depends on, for checkpoints (engine/scene/checkpoint.hpp): time and step
   // count, the particles in their memory order (sums over particles follow it, so it is part of
   // the state for bitwise equality), the materials' ranges and wave speeds, the colliders' poses,
-  // velocities and reactions, the loads' ramps, the footprint and the energy budget. What the
+  // velocities and reactions, the loads' ramps, the footprint, the energy budget and the breaks
+  // that decide the next reorder of the particles. What the
   // scene defines (material parameters, collider shapes, load regions) is not saved: load_state()
   // restores into a simulation built from the same scene, and refuses one that differs in
   // precision, materials, colliders, loads or footprint.
@@ -571,6 +572,7 @@ class Simulation {
     for (auto& f : sim.footprint_.impulse) s.field(f);
     s.field(sim.footprint_.time);
     s.field(sim.budget_);
+    s.field(sim.binning_.walk_breaks());
   }
 
   std::vector<ParticleRange> ranges() const {
