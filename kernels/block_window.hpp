@@ -4,7 +4,8 @@
 // a small dense scratch (L1-resident on the CPU, shared memory on a GPU; no atomics) and then adds
 // it to the grid; G2P first copies the window's velocities out of the sparse grid so the particle
 // loop reads a dense array. Both windows work node by node (`flush_node`, `load_node`) so that a
-// GPU thread block can share the work; `flush` and `load` are the single-thread loops over them.
+// GPU thread block can share the work; `flush` and `load` are the single-thread loops, block by
+// block of the window (for_each_window_node).
 #pragma once
 
 #include <cstdint>
@@ -38,6 +39,26 @@ FIRN_HD void window_node(const int origin[3], int n, int g[3]) {
   g[2] = origin[2] + n % kSpan;
 }
 
+// f(n, data, l) for every local node n of the window whose node (0, 0, 0) is `origin` (a block's
+// first node): data is the grid block holding the node and l the node's index in it. The window lies
+// in the blocks origin / kBlockSize + {0, 1}^3, so each of them is looked up once for all its nodes
+// (the single-thread loops `flush` and `load`; a GPU thread takes one node by window_node).
+template <int kSpan, class T, class F>
+FIRN_HD void for_each_window_node(const SparseGridView<T>& grid, const int origin[3], F&& f) {
+  static_assert(kSpan > kBlockSize && kSpan <= 2 * kBlockSize, "a window spans two blocks per axis");
+  for (int bx = 0; bx < 2; ++bx)
+    for (int by = 0; by < 2; ++by)
+      for (int bz = 0; bz < 2; ++bz) {
+        T* data = grid.block((origin[0] >> kBlockShift) + bx, (origin[1] >> kBlockShift) + by,
+                             (origin[2] >> kBlockShift) + bz);
+        for (int x = bx * kBlockSize; x < (bx ? kSpan : kBlockSize); ++x)
+          for (int y = by * kBlockSize; y < (by ? kSpan : kBlockSize); ++y)
+            for (int z = bz * kBlockSize; z < (bz ? kSpan : kBlockSize); ++z)
+              f((x * kSpan + y) * kSpan + z, data,
+                local_node(x - bx * kBlockSize, y - by * kBlockSize, z - bz * kBlockSize));
+      }
+}
+
 template <class T, int kSpan, int kChannels>
 struct BlockScratch {
   static constexpr int kNodes = kSpan * kSpan * kSpan;
@@ -68,7 +89,9 @@ struct BlockScratch {
     for (int ch = 0; ch < kChannels; ++ch) blk[ch * kBlockNodes + l] += v[ch];
   }
   FIRN_HD void flush(const SparseGridView<T>& grid) const {
-    for (int n = 0; n < kNodes; ++n) flush_node(grid, n);
+    for_each_window_node<kSpan>(grid, origin, [&](int n, T* blk, int l) {
+      for (int ch = 0; ch < kChannels; ++ch) blk[ch * kBlockNodes + l] += values[n * kChannels + ch];
+    });
   }
 };
 
@@ -93,7 +116,10 @@ struct BlockGather {
   }
   FIRN_HD void load(const SparseGridView<T>& grid, int first, const int block[3]) {
     set_origin(block);
-    for (int n = 0; n < kNodes; ++n) load_node(grid, first, n);
+    for_each_window_node<kSpan>(grid, origin, [&](int n, const T* blk, int l) {
+      for (int ch = 0; ch < kChannels; ++ch)
+        values[n * kChannels + ch] = first + ch < grid.channels ? blk[(first + ch) * kBlockNodes + l] : T(0);
+    });
   }
   // The grid source of g2p_particle: nodes (i, j, k ..) are consecutive here.
   FIRN_HD const T* row(int i, int j, int k) const {
