@@ -406,10 +406,10 @@ class Simulation {
   // count, the particles in their memory order (sums over particles follow it, so it is part of
   // the state for bitwise equality), the materials' ranges and wave speeds, the colliders' poses,
   // velocities and reactions, the loads' ramps, the footprint, the energy budget and the breaks
-  // that decide the next reorder of the particles. What the
-  // scene defines (material parameters, collider shapes, load regions) is not saved: load_state()
-  // restores into a simulation built from the same scene, and refuses one that differs in
-  // precision, materials, colliders, loads or footprint.
+  // that decide the next reorder of the particles. What the scene defines (material parameters,
+  // collider shapes, load regions) is not saved: load_state() restores into a simulation built
+  // from the same scene, and refuses one that differs in precision, materials, colliders, loads or
+  // footprint.
   void save_state(StateWriter& out) {
     prepare();
     out.value(std::uint32_t(sizeof(T)));

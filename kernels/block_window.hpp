@@ -85,13 +85,14 @@ struct BlockScratch {
     window_node<kSpan>(origin, n, g);
     T* blk = grid.block(g[0] >> kBlockShift, g[1] >> kBlockShift, g[2] >> kBlockShift);
     const int l = local_node(g[0] & (kBlockSize - 1), g[1] & (kBlockSize - 1), g[2] & (kBlockSize - 1));
-    const T* v = values + n * kChannels;
-    for (int ch = 0; ch < kChannels; ++ch) blk[ch * kBlockNodes + l] += v[ch];
+    add_node(n, blk, l);
   }
   FIRN_HD void flush(const SparseGridView<T>& grid) const {
-    for_each_window_node<kSpan>(grid, origin, [&](int n, T* blk, int l) {
-      for (int ch = 0; ch < kChannels; ++ch) blk[ch * kBlockNodes + l] += values[n * kChannels + ch];
-    });
+    for_each_window_node<kSpan>(grid, origin, [&](int n, T* blk, int l) { add_node(n, blk, l); });
+  }
+  // Adds local node n into node l of the grid block blk.
+  FIRN_HD void add_node(int n, T* blk, int l) const {
+    for (int ch = 0; ch < kChannels; ++ch) blk[ch * kBlockNodes + l] += values[n * kChannels + ch];
   }
 };
 
@@ -111,15 +112,18 @@ struct BlockGather {
     window_node<kSpan>(origin, n, g);
     const T* blk = grid.block(g[0] >> kBlockShift, g[1] >> kBlockShift, g[2] >> kBlockShift);
     const int l = local_node(g[0] & (kBlockSize - 1), g[1] & (kBlockSize - 1), g[2] & (kBlockSize - 1));
-    T* v = values + n * kChannels;
-    for (int ch = 0; ch < kChannels; ++ch) v[ch] = first + ch < grid.channels ? blk[(first + ch) * kBlockNodes + l] : T(0);
+    copy_node(n, blk, l, grid.channels, first);
   }
   FIRN_HD void load(const SparseGridView<T>& grid, int first, const int block[3]) {
     set_origin(block);
-    for_each_window_node<kSpan>(grid, origin, [&](int n, const T* blk, int l) {
-      for (int ch = 0; ch < kChannels; ++ch)
-        values[n * kChannels + ch] = first + ch < grid.channels ? blk[(first + ch) * kBlockNodes + l] : T(0);
-    });
+    for_each_window_node<kSpan>(grid, origin,
+                                [&](int n, const T* blk, int l) { copy_node(n, blk, l, grid.channels, first); });
+  }
+  // Copies channels [first, first + kChannels) of node l of the grid block blk (which has
+  // `channels` channels) into local node n.
+  FIRN_HD void copy_node(int n, const T* blk, int l, int channels, int first) {
+    T* v = values + n * kChannels;
+    for (int ch = 0; ch < kChannels; ++ch) v[ch] = first + ch < channels ? blk[(first + ch) * kBlockNodes + l] : T(0);
   }
   // The grid source of g2p_particle: nodes (i, j, k ..) are consecutive here.
   FIRN_HD const T* row(int i, int j, int k) const {
