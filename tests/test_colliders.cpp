@@ -9,6 +9,7 @@
 #include "engine/simulation.hpp"
 #include "kernels/colliders.hpp"
 #include "kernels/friction.hpp"
+#include "kernels/grid_update.hpp"
 
 namespace firn {
 namespace {
@@ -209,6 +210,68 @@ TEST(Colliders, BoundsHoldTheSolid) {
   Collider<double> plane;
   plane.bounds(lo, hi);
   EXPECT_TRUE(std::isinf(hi[1]));
+}
+
+// grid_update_block skips, for a whole block, the colliders whose bounding box is farther than the
+// skin from the block's nodes (colliders_near_block). That may change nothing: no node of a skipped
+// block is inside such a collider by more than the skin. Checked for turned shapes on every block
+// of a grid around them, in float and double, where both kinds of block occur.
+template <class T>
+void check_skipped_blocks_hold_no_node() {
+  GridUpdateParams<T> p{};
+  p.dx = T(0.01);
+  for (int d = 0; d < 3; ++d) p.origin[d] = T(-0.32);
+  const double angle = 0.4, tilt = 0.15;  // about z, then about x: R = Rz(angle) Rx(tilt)
+  const double ca = std::cos(angle), sa = std::sin(angle), ct = std::cos(tilt), st = std::sin(tilt);
+  const double r[9] = {ca, -sa * ct, sa * st, sa, ca * ct, -ca * st, 0, st, ct};
+  Collider<double> shapes[4];
+  shapes[0].shape = ColliderShape::tire;
+  shapes[0].tire.radius = 0.15, shapes[0].tire.width = 0.08;
+  shapes[1].shape = ColliderShape::box;
+  shapes[1].half[0] = 0.1, shapes[1].half[1] = 0.03, shapes[1].half[2] = 0.05;
+  shapes[1].center[0] = 0.12;
+  shapes[2].shape = ColliderShape::cylinder;
+  shapes[2].radius = 0.06, shapes[2].half[2] = 0.04;
+  shapes[2].center[1] = -0.15;
+  shapes[3].center[1] = -0.25;  // a plane: never skipped
+  for (Collider<double>& c : shapes)
+    for (int i = 0; i < 9; ++i) c.rotation[i] = r[i];
+  p.collider_count = 4;
+  for (int c = 0; c < 4; ++c) p.colliders[c] = collider_cast<T>(shapes[c]);
+  const T skin = T(kColliderSkin) * p.dx;
+  int skipped[4] = {}, kept[4] = {};
+  for (int bx = 0; bx < 16; ++bx)
+    for (int by = 0; by < 16; ++by)
+      for (int bz = 0; bz < 16; ++bz) {
+        const int block[3] = {bx, by, bz};
+        const std::uint32_t near = colliders_near_block(block, p);
+        for (int c = 0; c < 4; ++c) {
+          if (near >> c & 1u) {
+            ++kept[c];
+            continue;
+          }
+          ++skipped[c];
+          for (int l = 0; l < kBlockNodes; ++l) {
+            int node[3];
+            block_node(block, l, node);
+            const T x[3] = {p.origin[0] + T(node[0]) * p.dx, p.origin[1] + T(node[1]) * p.dx,
+                            p.origin[2] + T(node[2]) * p.dx};
+            T n[3];
+            ASSERT_GE(p.colliders[c].distance(x, n), -skin) << "collider " << c << " node " << l << " of block "
+                                                            << bx << " " << by << " " << bz;
+          }
+        }
+      }
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_GT(skipped[c], 0) << "collider " << c;
+    EXPECT_GT(kept[c], 0) << "collider " << c;
+  }
+  EXPECT_EQ(skipped[3], 0);
+}
+
+TEST(Colliders, BlocksSkipOnlyCollidersThatHoldNoneOfTheirNodes) {
+  check_skipped_blocks_hold_no_node<float>();
+  check_skipped_blocks_hold_no_node<double>();
 }
 
 }  // namespace
