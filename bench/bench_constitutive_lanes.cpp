@@ -3,7 +3,9 @@
 // batches of the host's vector width (ConstitutiveUpdateLanes, issue 15), float, one thread, on
 // 65,536 particles of thesis_hard_snow in a step's state: a trial state returned to the yield
 // surface, then an increment F <- (I + G) F with |G_ij| <= 2e-3 (fixed seed), so that nearly every
-// particle yields again, as the snow of the tire scenes does at every step. Items are particles.
+// particle yields again, as the snow of the tire scenes does at every step; and the same for
+// fresh_snow (Cam-clay) strained within its elastic range, where the lanes hold the yield check
+// only (SnowCamClay::project_lanes). Items are particles.
 //   build/release/bench/firn_bench_kernels --benchmark_filter=constitutive
 #include <benchmark/benchmark.h>
 
@@ -18,16 +20,16 @@ namespace firn {
 namespace {
 
 constexpr int kParticles = 1 << 16;
-using Model = HyperelasticPlastic<float>;
 
 struct StepStates {
-  Model model;
+  HyperelasticPlastic<float> model;
   std::vector<Mat3<float>> F;
 };
 
 const StepStates& step_states() {
   static const StepStates states = [] {
-    StepStates s{std::get<Model>(make_material_model<float>(preset_material_info("thesis_hard_snow"))), {}};
+    StepStates s{std::get<HyperelasticPlastic<float>>(make_material_model<float>(preset_material_info("thesis_hard_snow"))),
+                 {}};
     std::mt19937_64 rng(20261127);
     std::uniform_real_distribution<double> noise(-0.25, 0.25);
     std::uniform_real_distribution<float> increment(-2e-3f, 2e-3f);
@@ -48,20 +50,44 @@ const StepStates& step_states() {
   return states;
 }
 
-void BM_ConstitutiveUpdate(benchmark::State& state, bool lanes) {
-  const StepStates& s = step_states();
+// fresh_snow (Cam-clay) at rest density, strained by |F_ij - I_ij| <= 3e-4 (fixed seed): every
+// particle stays elastic, as most of a snow bed does outside a tire's rut.
+struct ElasticStates {
+  SnowCamClay<float> model;
+  std::vector<Mat3<float>> F;
+};
+
+const ElasticStates& elastic_states() {
+  static const ElasticStates states = [] {
+    ElasticStates s{std::get<SnowCamClay<float>>(make_material_model<float>(preset_material_info("fresh_snow"))), {}};
+    std::mt19937_64 rng(20261127);
+    std::uniform_real_distribution<float> strain(-3e-4f, 3e-4f);
+    s.F.assign(kParticles, Mat3<float>::identity());
+    for (auto& f : s.F)
+      for (float& x : f.m) x += strain(rng);
+    return s;
+  }();
+  return states;
+}
+
+// The update of kParticles particles from the states F and the plastic scalar `scalar0` (alpha or
+// J_P, as the model uses), one at a time or in lanes.
+template <class Model>
+void run_update(benchmark::State& state, const Model& model, const std::vector<Mat3<float>>& F, float scalar0,
+                bool lanes) {
   ParticleStorage<float> storage;
-  storage.enable(Attribute::alpha);
+  storage.enable(Model::kUsesAlpha ? Attribute::alpha : Attribute::Jp);
   storage.resize(kParticles);
   const ParticleView<float> pv = storage.view();
+  float* scalar = Model::kUsesAlpha ? pv.alpha : pv.Jp;
   constexpr int W = lane_width<float>(kHostVectorBytes);
-  const ConstitutiveUpdate<float, Model> one{pv, s.model, 0, true};
+  const ConstitutiveUpdate<float, Model> one{pv, model, 0, true};
   const ConstitutiveUpdateLanes<float, Model, W> batched{one, kParticles};
   for (auto _ : state) {
     state.PauseTiming();
     for (int p = 0; p < kParticles; ++p) {
-      for (int q = 0; q < 9; ++q) pv.F[q][p] = s.F[p].m[q];
-      pv.alpha[p] = 0.01f;
+      for (int q = 0; q < 9; ++q) pv.F[q][p] = F[p].m[q];
+      scalar[p] = scalar0;
       pv.vol0[p] = 1e-6f;
     }
     state.ResumeTiming();
@@ -76,9 +102,19 @@ void BM_ConstitutiveUpdate(benchmark::State& state, bool lanes) {
   state.counters["lanes"] = lanes ? W : 1;
 }
 
-const bool registered = (benchmark::RegisterBenchmark("constitutive/hyperelastic_plastic/scalar", BM_ConstitutiveUpdate, false),
-                         benchmark::RegisterBenchmark("constitutive/hyperelastic_plastic/lanes", BM_ConstitutiveUpdate, true),
-                         true);
+void BM_HyperelasticPlastic(benchmark::State& state, bool lanes) {
+  run_update(state, step_states().model, step_states().F, 0.01f, lanes);
+}
+
+void BM_CamClayElastic(benchmark::State& state, bool lanes) {
+  run_update(state, elastic_states().model, elastic_states().F, 1.0f, lanes);
+}
+
+const bool registered =
+    (benchmark::RegisterBenchmark("constitutive/hyperelastic_plastic/scalar", BM_HyperelasticPlastic, false),
+     benchmark::RegisterBenchmark("constitutive/hyperelastic_plastic/lanes", BM_HyperelasticPlastic, true),
+     benchmark::RegisterBenchmark("constitutive/snow_cam_clay_elastic/scalar", BM_CamClayElastic, false),
+     benchmark::RegisterBenchmark("constitutive/snow_cam_clay_elastic/lanes", BM_CamClayElastic, true), true);
 
 }  // namespace
 }  // namespace firn

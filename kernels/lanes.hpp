@@ -37,6 +37,11 @@ struct LaneMask {
     for (int l = 0; l < W; ++l) r.m[l] = 1;
     return r;
   }
+  FIRN_HD static LaneMask none() {
+    LaneMask r;
+    for (int l = 0; l < W; ++l) r.m[l] = 0;
+    return r;
+  }
 };
 
 template <class T, int W>

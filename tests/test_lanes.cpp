@@ -1,10 +1,12 @@
 // The lane form of the constitutive update (kernels/lanes.hpp, kernels/lane_math.hpp,
-// HyperelasticPlastic::project_lanes, ConstitutiveUpdateLanes): the lane functions against the C
-// library, the lane return against the scalar one, and a particle's result independent of its batch.
+// HyperelasticPlastic::project_lanes, SnowCamClay::project_lanes, ConstitutiveUpdateLanes): the lane
+// functions against the C library, the lane return against the scalar one, and a particle's result
+// independent of its batch.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "engine/materials.hpp"
@@ -157,6 +159,41 @@ void check_lane_return(const std::vector<Mat3<float>>& trial, bool steps) {
 TEST(LaneReturn, StepsMatchTheScalarReturn) { check_lane_return(step_states(64 * kW), true); }
 TEST(LaneReturn, LargeReturnsAreHandedBack) { check_lane_return(trial_states(64 * kW), false); }
 
+// The constitutive update of particles [begin, n] from the given F and plastic scalar (alpha or
+// J_P, as the model uses), batched in lanes or one by one: per particle F, tau and the scalar.
+template <class Model>
+std::pair<std::vector<float>, ConstitutiveSummary> run_update(const Model& model, const std::vector<Mat3<float>>& F,
+                                                              const std::vector<float>& state, bool lanes,
+                                                              std::size_t begin) {
+  const int n = int(F.size()) - 1;
+  ParticleStorage<float> storage;
+  storage.enable(Model::kUsesAlpha ? Attribute::alpha : Attribute::Jp);
+  storage.resize(n + 1);
+  ParticleView<float> pv = storage.view();
+  float* scalar = Model::kUsesAlpha ? pv.alpha : pv.Jp;
+  for (int p = 0; p <= n; ++p) {
+    for (int q = 0; q < 9; ++q) pv.F[q][p] = F[p].m[q];
+    scalar[p] = state[p];
+    pv.vol0[p] = 1e-6f;
+  }
+  const ConstitutiveUpdate<float, Model> one{pv, model, begin, true};
+  const std::size_t count = std::size_t(n + 1) - begin;
+  ConstitutiveSummary acc;
+  if (lanes) {
+    const ConstitutiveUpdateLanes<float, Model, kW> batched{one, count};
+    for (std::size_t b = 0; b < batched.batches(count); ++b) batched(b, acc);
+  } else {
+    for (std::size_t i = 0; i < count; ++i) one(i, acc);
+  }
+  std::vector<float> out;
+  for (int p = int(begin); p <= n; ++p) {
+    for (int q = 0; q < 9; ++q) out.push_back(pv.F[q][p]);
+    for (int c = 0; c < 6; ++c) out.push_back(pv.tau[c][p]);
+    out.push_back(scalar[p]);
+  }
+  return std::make_pair(out, acc);
+}
+
 // The batched update against the scalar one over particles that are not a whole number of
 // batches, and each particle's result independent of the batch it falls in (the range shifted by
 // one particle).
@@ -166,34 +203,9 @@ TEST(LaneReturn, BatchedUpdateIsTheScalarUpdateAndIndependentOfBatching) {
   std::vector<Mat3<float>> trial = step_states(n + 1);
   const std::vector<Mat3<float>> large = trial_states(n + 1);
   for (int p = 0; p <= n; p += 7) trial[p] = large[p];  // some lanes of each batch take the scalar path
-  auto run = [&](bool lanes, std::size_t begin) {
-    ParticleStorage<float> storage;
-    storage.enable(Attribute::alpha);
-    storage.resize(n + 1);
-    ParticleView<float> pv = storage.view();
-    for (int p = 0; p <= n; ++p) {
-      for (int q = 0; q < 9; ++q) pv.F[q][p] = trial[p].m[q];
-      pv.alpha[p] = 0.02f;
-      pv.vol0[p] = 1e-6f;
-    }
-    const ConstitutiveUpdate<float, HyperelasticPlastic<float>> one{pv, model, begin, true};
-    const std::size_t count = std::size_t(n + 1) - begin;
-    ConstitutiveSummary acc;
-    if (lanes) {
-      const ConstitutiveUpdateLanes<float, HyperelasticPlastic<float>, kW> batched{one, count};
-      for (std::size_t b = 0; b < batched.batches(count); ++b) batched(b, acc);
-    } else {
-      for (std::size_t i = 0; i < count; ++i) one(i, acc);
-    }
-    std::vector<float> out;
-    for (int p = int(begin); p <= n; ++p) {
-      for (int q = 0; q < 9; ++q) out.push_back(pv.F[q][p]);
-      for (int c = 0; c < 6; ++c) out.push_back(pv.tau[c][p]);
-      out.push_back(pv.alpha[p]);
-    }
-    return std::make_pair(out, acc);
-  };
-  const auto scalar = run(false, 0), batched = run(true, 0), shifted = run(true, 1);
+  const std::vector<float> alpha(n + 1, 0.02f);
+  const auto scalar = run_update(model, trial, alpha, false, 0), batched = run_update(model, trial, alpha, true, 0),
+             shifted = run_update(model, trial, alpha, true, 1);
   ASSERT_EQ(scalar.first.size(), batched.first.size());
   // F to 2e-6, tau to the stress of a strain of 2e-6 (some 30 float roundings), alpha to 1e-5.
   const float tau_tolerance = 2e-6f * model.p_wave_modulus();
@@ -208,6 +220,56 @@ TEST(LaneReturn, BatchedUpdateIsTheScalarUpdateAndIndependentOfBatching) {
   EXPECT_EQ(batched.second.first_bad, kNoParticle);
   for (std::size_t k = 0; k < shifted.first.size(); ++k)  // particle p at index p - 1
     EXPECT_EQ(shifted.first[k], batched.first[k + 16]) << k;
+}
+
+// Cam-clay snow's lane form checks yield in lanes and hands every particle that yields to the
+// scalar return, so F and J_P come out as the scalar update's (elastic ones untouched; returned ones
+// to rounding, as the scalar return is inlined into another function there) and the stress within
+// rounding. fresh_snow near its rest state (strains of a few 1e-4, J_P compacted, at rest and
+// dilated) mostly stays elastic; every third particle is strained far beyond yield, and J_P = 1.02
+// (dilated past the softening strain: no strength) yields under any stress.
+TEST(LaneReturn, CamClayBatchedUpdateIsTheScalarUpdate) {
+  static const MaterialModel<float> any = make_material_model<float>(preset_material_info("fresh_snow"));
+  const SnowCamClay<float>& model = std::get<SnowCamClay<float>>(any);
+  const int n = 7 * kW + 5;
+  std::vector<Mat3<float>> F(n + 1);
+  const std::vector<Mat3<float>> large = trial_states(n + 1);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<float> strain(-3e-4f, 3e-4f);
+  std::vector<float> Jp(n + 1);
+  const float kJp[4] = {1.0f, 0.8f, 1.004f, 1.02f};
+  for (int p = 0; p <= n; ++p) {
+    F[p] = Mat3<float>::identity();
+    for (float& x : F[p].m) x += strain(rng);
+    if (p % 3 == 0) F[p] = large[p];
+    Jp[p] = kJp[p % 4];
+  }
+  const auto scalar = run_update(model, F, Jp, false, 0), batched = run_update(model, F, Jp, true, 0),
+             shifted = run_update(model, F, Jp, true, 1);
+  ASSERT_EQ(scalar.first.size(), batched.first.size());
+  const float tau_tolerance = 2e-6f * model.p_wave_modulus();
+  int elastic = 0, yielded = 0;
+  for (int p = 0; p <= n; ++p) {
+    bool changed = scalar.first[16 * p + 15] != Jp[p];
+    for (int q = 0; q < 9; ++q) changed = changed || scalar.first[16 * p + q] != F[p].m[q];
+    (changed ? yielded : elastic) += 1;
+    for (int k = 16 * p; k < 16 * p + 16; ++k) {
+      const int field = k % 16;
+      if (field >= 9 && field < 15)
+        EXPECT_NEAR(batched.first[k], scalar.first[k], tau_tolerance) << "particle " << p << " field " << field;
+      else if (changed)  // the scalar return's, inlined into another function there
+        EXPECT_NEAR(batched.first[k], scalar.first[k], 2e-6f) << "particle " << p << " field " << field;
+      else  // untouched
+        EXPECT_EQ(batched.first[k], scalar.first[k]) << "particle " << p << " field " << field;
+    }
+  }
+  EXPECT_GT(elastic, n / 3);
+  EXPECT_GT(yielded, n / 3);
+  EXPECT_NEAR(batched.second.plastic_work, scalar.second.plastic_work, 1e-4 * scalar.second.plastic_work);
+  EXPECT_GT(scalar.second.plastic_work, 0);
+  EXPECT_EQ(batched.second.max_modulus, scalar.second.max_modulus);
+  EXPECT_EQ(batched.second.first_bad, kNoParticle);
+  for (std::size_t k = 0; k < shifted.first.size(); ++k) EXPECT_EQ(shifted.first[k], batched.first[k + 16]) << k;
 }
 
 }  // namespace

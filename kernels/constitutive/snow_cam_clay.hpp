@@ -34,6 +34,8 @@
 // The new F_E, the trial one stretched by a symmetric tensor coaxial with b_tr, has
 // dev(bbar_e) = (q / q_t) dev(bbar_tr) and det = J_E(p) (kernels/constitutive/deviator_rescale.hpp).
 // Neither path takes an SVD: the elastic one (y <= 0) costs one F F^T.
+// The lane form (project_lanes, kirchhoff_lanes; kernels/lanes.hpp) checks W particles at once and
+// hands the ones that yield to project(), so the common elastic case runs in vector lanes.
 #pragma once
 
 #include <cmath>
@@ -44,6 +46,8 @@
 #include "kernels/constitutive/plastic_state.hpp"
 #include "kernels/float_limits.hpp"
 #include "kernels/hd.hpp"
+#include "kernels/lane_math.hpp"
+#include "kernels/lanes.hpp"
 #include "kernels/mat3.hpp"
 
 namespace firn {
@@ -52,6 +56,7 @@ template <class T>
 struct SnowCamClay {
   static constexpr const char* kName = "snow_cam_clay";
   static constexpr bool kPlastic = true, kUsesAlpha = false, kUsesJp = true;
+  static constexpr bool kLanes = true;  // project_lanes, kirchhoff_lanes
   MooneyRivlin<T> elastic;  // G2 = 0
   T M;                      // slope of the critical state line
   T beta;                   // cohesion: the tensile tip is at -beta p0
@@ -95,6 +100,36 @@ struct SnowCamClay {
     state.Jp = Jt / J_new;
     F = rescale_isochoric_deviator(F, Jm23, Ibar, q > T(0) ? r.q / q : T(0), J_new, std::cbrt(J_new / J));
     return true;
+  }
+
+  // project() on W particles at once for the elastic case: the yield check of project() in lane
+  // arithmetic (J^(-2/3) by kernels/lane_math.hpp; p0 per lane, as project() has it). A lane that
+  // yields, or whose J is not positive, is cleared in `ok` and left unchanged for the caller to
+  // project with project(); no lane is returned here, so the mask of lanes returned is empty and
+  // `work` is zero.
+  template <int W>
+  FIRN_HD LaneMask<W> project_lanes(const Mat3<Lanes<T, W>>& F, const Lanes<T, W>& Jp, Lanes<T, W>& work,
+                                    LaneMask<W>& ok) const {
+    using L = Lanes<T, W>;
+    const L J = determinant(F);
+    const Mat3<L> b = mul_transposed(F, F);
+    const L mean = trace(b) / L(T(3));
+    Mat3<L> dev = b;
+    for (int d = 0; d < 3; ++d) dev(d, d) -= mean;
+    const L Jt = J * Jp;
+    const L p = L(elastic.K / T(2)) * (L(T(1)) - J * J) / Jt;
+    const L q = sqrt(L(T(1.5)) * ddot(dev, dev)) * L(elastic.G1) * pow_minus_two_thirds(J) / Jt;
+    L p0;
+    for (int l = 0; l < W; ++l) p0.v[l] = consolidation_pressure(PlasticState<T>{T(0), Jp.v[l]});
+    const L y = L(T(1) + T(2) * beta) * q * q + L(M * M) * (p + L(beta) * p0) * (p - p0);
+    ok = ok && J > L(T(0)) && y <= L(T(0));  // a NaN yield value is handed back too, as project() does
+    work = L(T(0));
+    return LaneMask<W>::none();
+  }
+
+  template <int W>
+  FIRN_HD Mat3<Lanes<T, W>> kirchhoff_lanes(const Mat3<Lanes<T, W>>& F) const {
+    return elastic.kirchhoff_of(F);
   }
 
  private:

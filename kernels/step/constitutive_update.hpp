@@ -89,12 +89,13 @@ struct HasLanes<Model, std::void_t<decltype(Model::kLanes)>> : std::integral_con
 
 // ConstitutiveUpdate on batches of W particles (kernels/lanes.hpp; issue 15): item `batch` covers
 // particles [batch W, batch W + W) of the range, the last batch padded with copies of its first
-// particle whose results are dropped. The lanes run the model's lane form; a lane the lane form
+// particle whose results are dropped. The lanes carry F and the model's one plastic scalar (alpha
+// for J2 plasticity, J_P for Cam-clay snow) and run the model's lane form; a lane the lane form
 // leaves to the scalar path (ok cleared) is updated by ConstitutiveUpdate itself. Every particle's
 // result depends on its own state only, so it is the same for any batching and thread count.
 template <class T, class Model, int W>
 struct ConstitutiveUpdateLanes {
-  static_assert(Model::kUsesAlpha && !Model::kUsesJp, "the lanes carry F and alpha");
+  static_assert(Model::kUsesAlpha != Model::kUsesJp, "the lanes carry F and one plastic scalar");
   ConstitutiveUpdate<T, Model> one;
   std::size_t n;  // particles in the range
 
@@ -103,35 +104,36 @@ struct ConstitutiveUpdateLanes {
   FIRN_FLATTEN FIRN_HD void operator()(std::size_t batch, ConstitutiveSummary& acc) const {
     using L = Lanes<T, W>;
     const ParticleView<T>& pv = one.pv;
+    T* const state = Model::kUsesAlpha ? pv.alpha : pv.Jp;
     const std::size_t first = one.begin + batch * W;
     const int count = n - batch * W < std::size_t(W) ? int(n - batch * W) : W;
     Mat3<L> F;
-    L alpha, work(T(0));
+    L s, work(T(0));
     if (count == W) {  // contiguous loads
       for (int q = 0; q < 9; ++q) {
         FIRN_LANES
         for (int l = 0; l < W; ++l) F.m[q].v[l] = pv.F[q][first + l];
       }
       FIRN_LANES
-      for (int l = 0; l < W; ++l) alpha.v[l] = pv.alpha[first + l];
+      for (int l = 0; l < W; ++l) s.v[l] = state[first + l];
     } else {
       for (int l = 0; l < W; ++l) {
         const std::size_t p = first + (l < count ? l : 0);
         for (int q = 0; q < 9; ++q) F.m[q].v[l] = pv.F[q][p];
-        alpha.v[l] = pv.alpha[p];
+        s.v[l] = state[p];
       }
     }
     LaneMask<W> ok = LaneMask<W>::all();
-    const LaneMask<W> plastic = one.model.project_lanes(F, alpha, work, ok);
+    const LaneMask<W> plastic = one.model.project_lanes(F, s, work, ok);
     const Mat3<L> tau = one.model.kirchhoff_lanes(F);
-    // Every lane's F and alpha are stored, changed or not (a lane that did not yield, or that the
-    // lane form handed back, holds the values it read), then its stress.
+    // Every lane's F and plastic scalar are stored, changed or not (a lane that did not yield, or
+    // that the lane form handed back, holds the values it read), then its stress.
     for (int q = 0; q < 9; ++q) {
       FIRN_LANES
       for (int l = 0; l < count; ++l) pv.F[q][first + l] = F.m[q].v[l];
     }
     FIRN_LANES
-    for (int l = 0; l < count; ++l) pv.alpha[first + l] = alpha.v[l];
+    for (int l = 0; l < count; ++l) state[first + l] = s.v[l];
     const int kTau[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};  // ParticleView::tau's order
     for (int c = 0; c < 6; ++c) {
       FIRN_LANES
@@ -140,13 +142,14 @@ struct ConstitutiveUpdateLanes {
     const LaneMask<W> finite_stress = finite(tau(0, 0) + tau(1, 1) + tau(2, 2) + tau(0, 1) + tau(1, 2) + tau(2, 0));
     for (int l = 0; l < count; ++l) {
       const std::size_t p = first + l;
-      if (!ok.m[l]) {  // the scalar update, from the F and alpha stored above: the values it read
+      if (!ok.m[l]) {  // the scalar update, from the F and state stored above: the values it read
         one(p - one.begin, acc);
         continue;
       }
       if (one.plastic_work && plastic.m[l]) acc.plastic_work += double(pv.vol0[p]) * double(work.v[l]);
       if (!finite_stress.m[l] && p < acc.first_bad) acc.first_bad = p;
-      acc.max_modulus = std::max(acc.max_modulus, double(one.model.p_wave_modulus(PlasticState<T>{alpha.v[l]})));
+      const PlasticState<T> after = Model::kUsesAlpha ? PlasticState<T>{s.v[l], T(1)} : PlasticState<T>{T(0), s.v[l]};
+      acc.max_modulus = std::max(acc.max_modulus, double(one.model.p_wave_modulus(after)));
     }
   }
 };
