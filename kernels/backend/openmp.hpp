@@ -25,6 +25,7 @@ struct OpenMP {
   // Launches with fewer items run on the calling thread: waking the team costs more than they do.
   static constexpr long kMinParallelItems = 4096;
   static constexpr long kMinParallelBlocks = 64;
+  static constexpr int kGatherChunk = 16;  // blocks per hand-out in gather_blocks
   int thread_count = omp_get_max_threads();
   LaunchProfile* profile = nullptr;
 
@@ -81,7 +82,11 @@ struct OpenMP {
     using R = decltype(f(blocks[0]));
     std::vector<R> partial(count);
     const long n = static_cast<long>(count);
-#pragma omp parallel for num_threads(thread_count) schedule(dynamic, 1) if (n >= kMinParallelBlocks)
+    // Runs of kGatherChunk consecutive blocks per thread, not single blocks: consecutive blocks'
+    // particles are neighbours in the particle arrays (and their results in `partial`), so handing
+    // them to different threads made the threads write the same cache lines at every block
+    // boundary. The result does not depend on the schedule (partial is combined in order).
+#pragma omp parallel for num_threads(thread_count) schedule(dynamic, kGatherChunk) if (n >= kMinParallelBlocks)
     for (long i = 0; i < n; ++i) partial[static_cast<std::size_t>(i)] = f(blocks[i]);
     R result{};
     for (const R& p : partial) combine(result, p);
