@@ -121,8 +121,7 @@ struct SnowCamClay {
     const L q = sqrt(L(T(1.5)) * ddot(dev, dev)) * L(elastic.G1) * pow_minus_two_thirds(J) / Jt;
     L p0;
     for (int l = 0; l < W; ++l) p0.v[l] = consolidation_pressure(PlasticState<T>{T(0), Jp.v[l]});
-    const L y = L(T(1) + T(2) * beta) * q * q + L(M * M) * (p + L(beta) * p0) * (p - p0);
-    ok = ok && J > L(T(0)) && y <= L(T(0));  // a NaN yield value is handed back too, as project() does
+    ok = ok && J > L(T(0)) && yield(p, q, p0) <= L(T(0));  // a NaN yield value is handed back too, as project() does
     work = L(T(0));
     return LaneMask<W>::none();
   }
@@ -137,8 +136,10 @@ struct SnowCamClay {
     T p, q;  // the returned Cauchy stress invariants
   };
 
-  FIRN_HD T yield(T p, T q, T p0) const {
-    return (T(1) + T(2) * beta) * q * q + M * M * (p + beta * p0) * (p - p0);
+  // y(p, q) for one particle (V = T) or W of them (V = Lanes<T, W>).
+  template <class V>
+  FIRN_HD V yield(const V& p, const V& q, const V& p0) const {
+    return V(T(1) + T(2) * beta) * q * q + V(M * M) * (p + V(beta) * p0) * (p - p0);
   }
 
   // The point where the ray from the centre of the ellipse of size s through (p, q) meets it.
