@@ -1,6 +1,7 @@
 // Microbenchmark of the whole constitutive update of yielding snow (return mapping, stress, write
 // back; kernels/step/constitutive_update.hpp), one particle at a time (ConstitutiveUpdate) against
-// batches of the host's vector width (ConstitutiveUpdateLanes, issue 15), float, one thread, on
+// batches of lanes (ConstitutiveUpdateLanes, issue 15; `lanes` the engine's batch of two vectors,
+// `one_vector` a batch of one), float, one thread, on
 // 65,536 particles of thesis_hard_snow in a step's state: a trial state returned to the yield
 // surface, then an increment F <- (I + G) F with |G_ij| <= 2e-3 (fixed seed), so that nearly every
 // particle yields again, as the snow of the tire scenes does at every step; and the same for
@@ -71,18 +72,15 @@ const ElasticStates& elastic_states() {
 }
 
 // The update of kParticles particles from the states F and the plastic scalar `scalar0` (alpha or
-// J_P, as the model uses), one at a time or in lanes.
-template <class Model>
-void run_update(benchmark::State& state, const Model& model, const std::vector<Mat3<float>>& F, float scalar0,
-                bool lanes) {
+// J_P, as the model uses), one at a time (W = 0) or in batches of W lanes.
+template <int W, class Model>
+void run_update(benchmark::State& state, const Model& model, const std::vector<Mat3<float>>& F, float scalar0) {
   ParticleStorage<float> storage;
   storage.enable(Model::kUsesAlpha ? Attribute::alpha : Attribute::Jp);
   storage.resize(kParticles);
   const ParticleView<float> pv = storage.view();
   float* scalar = Model::kUsesAlpha ? pv.alpha : pv.Jp;
-  constexpr int W = lane_width<float>(kHostVectorBytes);
   const ConstitutiveUpdate<float, Model> one{pv, model, 0, true};
-  const ConstitutiveUpdateLanes<float, Model, W> batched{one, kParticles};
   for (auto _ : state) {
     state.PauseTiming();
     for (int p = 0; p < kParticles; ++p) {
@@ -92,29 +90,38 @@ void run_update(benchmark::State& state, const Model& model, const std::vector<M
     }
     state.ResumeTiming();
     ConstitutiveSummary acc;
-    if (lanes)
+    if constexpr (W > 0) {
+      const ConstitutiveUpdateLanes<float, Model, W> batched{one, kParticles};
       for (std::size_t b = 0; b < batched.batches(kParticles); ++b) batched(b, acc);
-    else
+    } else {
       for (std::size_t i = 0; i < std::size_t(kParticles); ++i) one(i, acc);
+    }
     benchmark::DoNotOptimize(acc);
   }
   state.SetItemsProcessed(state.iterations() * kParticles);
-  state.counters["lanes"] = lanes ? W : 1;
+  state.counters["lanes"] = W > 0 ? W : 1;
 }
 
-void BM_HyperelasticPlastic(benchmark::State& state, bool lanes) {
-  run_update(state, step_states().model, step_states().F, 0.01f, lanes);
+// The engine's batch (kernels/lanes.hpp: two vectors), one vector, and one particle at a time.
+constexpr int kBatch = batch_width<float>(kHostVectorBytes), kVector = lane_width<float>(kHostVectorBytes);
+
+template <int W>
+void BM_HyperelasticPlastic(benchmark::State& state) {
+  run_update<W>(state, step_states().model, step_states().F, 0.01f);
 }
 
-void BM_CamClayElastic(benchmark::State& state, bool lanes) {
-  run_update(state, elastic_states().model, elastic_states().F, 1.0f, lanes);
+template <int W>
+void BM_CamClayElastic(benchmark::State& state) {
+  run_update<W>(state, elastic_states().model, elastic_states().F, 1.0f);
 }
 
 const bool registered =
-    (benchmark::RegisterBenchmark("constitutive/hyperelastic_plastic/scalar", BM_HyperelasticPlastic, false),
-     benchmark::RegisterBenchmark("constitutive/hyperelastic_plastic/lanes", BM_HyperelasticPlastic, true),
-     benchmark::RegisterBenchmark("constitutive/snow_cam_clay_elastic/scalar", BM_CamClayElastic, false),
-     benchmark::RegisterBenchmark("constitutive/snow_cam_clay_elastic/lanes", BM_CamClayElastic, true), true);
+    (benchmark::RegisterBenchmark("constitutive/hyperelastic_plastic/scalar", BM_HyperelasticPlastic<0>),
+     benchmark::RegisterBenchmark("constitutive/hyperelastic_plastic/lanes", BM_HyperelasticPlastic<kBatch>),
+     benchmark::RegisterBenchmark("constitutive/hyperelastic_plastic/one_vector", BM_HyperelasticPlastic<kVector>),
+     benchmark::RegisterBenchmark("constitutive/snow_cam_clay_elastic/scalar", BM_CamClayElastic<0>),
+     benchmark::RegisterBenchmark("constitutive/snow_cam_clay_elastic/lanes", BM_CamClayElastic<kBatch>),
+     benchmark::RegisterBenchmark("constitutive/snow_cam_clay_elastic/one_vector", BM_CamClayElastic<kVector>), true);
 
 }  // namespace
 }  // namespace firn

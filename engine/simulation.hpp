@@ -706,8 +706,8 @@ class Simulation {
             const std::size_t n = m.range.end - m.range.begin;
             const ConstitutiveUpdate<T, Model> one{pv, model, m.range.begin, budget_enabled_};
             ConstitutiveSummary r;
-            if constexpr (HasLanes<Model>::value) {  // batches of the backend's vector width
-              using Batched = ConstitutiveUpdateLanes<T, Model, lane_width<T>(Backend::kVectorBytes)>;
+            if constexpr (HasLanes<Model>::value) {  // batches of two of the backend's vectors
+              using Batched = ConstitutiveUpdateLanes<T, Model, batch_width<T>(Backend::kVectorBytes)>;
               // Chunks of kReduceGrain particles, not batches: a material of a few chunks of
               // batches would leave threads idle.
               r = backend_.parallel_reduce(constitutive_launch_name<Model>(), Batched::batches(n),

@@ -22,10 +22,20 @@ constexpr int kHostVectorBytes = 32;
 constexpr int kHostVectorBytes = 16;
 #endif
 
-// Lanes of T per batch for a backend whose vectors are `bytes` wide (0: one particle per thread).
+// Lanes of T in one vector of a backend whose vectors are `bytes` wide (0: one particle per thread).
 template <class T>
 constexpr int lane_width(int bytes) {
   return bytes >= int(sizeof(T)) ? bytes / int(sizeof(T)) : 1;
+}
+
+// Lanes of T per batch: two of the backend's vectors. A return mapping is one long chain of
+// dependent operations (Newton steps through the power law, divisions), so one vector per batch
+// leaves the core waiting on each result; two give it two independent chains to interleave
+// (firn_bench_kernels constitutive/hyperelastic_plastic/lanes against /one_vector: 1.34 times the
+// rate with AVX-512; docs/performance.md). Four were no faster than two.
+template <class T>
+constexpr int batch_width(int bytes) {
+  return bytes >= int(sizeof(T)) ? 2 * lane_width<T>(bytes) : 1;
 }
 
 // A lane's condition as 0 or 1 in an int: a bool array does not vectorise beside float lanes (GCC 12).

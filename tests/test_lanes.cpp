@@ -17,7 +17,7 @@
 namespace firn {
 namespace {
 
-constexpr int kW = lane_width<float>(kHostVectorBytes);
+constexpr int kW = batch_width<float>(kHostVectorBytes);  // the engine's batch
 
 template <class T>
 T relative_error(T a, T b) {

@@ -129,7 +129,7 @@ struct HyperelasticPlastic {
 
     const L mu_bar = L(elastic.G1) * Ibar;  // step 2
     L sigma_end;
-    const L dgamma = solve_j2_return_lanes(hardening, alpha, s_norm, mu_bar, yields, ok, sigma_end);
+    const L dgamma = solve_j2_return_lanes(hardening, alpha, s_norm, mu_bar, sigma_n, slope, yields, ok, sigma_end);
     const L keep = L(T(1)) - L(T(2)) * mu_bar * dgamma / s_norm;
     const L alpha_end = alpha + sqrt23 * dgamma;
     const Mat3<L> F_end = rescale_isochoric_deviator_lanes(F, Jm23, Ibar, keep, J, yields, ok);  // step 3

@@ -126,21 +126,24 @@ FIRN_HD J2ReturnSolution<T> solve_j2_return(const J2Hardening<T>& h, T alpha_n, 
 // solve_j2_return on W lanes at once, for the lanes in `active`: plain Newton steps from dgamma = 0
 // until every active lane's |f| or step is at rounding. It takes no bisection, so a lane whose
 // iterate leaves the bracket [0, s_norm / (2 mu_bar)] (a softening law) or that has not converged
-// in kMaxSteps is cleared in `ok`, for the caller to return by the scalar solver. sigma_end is
-// sigma_y at the returned dgamma (for the plastic work).
+// in kMaxSteps is cleared in `ok`, for the caller to return by the scalar solver. sigma_n and
+// slope_n are the law at alpha_n (the caller's yield check has them: the first step reuses them
+// rather than evaluate the power law again). sigma_end is sigma_y at the returned dgamma (for the
+// plastic work).
 template <class T, int W>
 FIRN_HD Lanes<T, W> solve_j2_return_lanes(const J2Hardening<T>& h, const Lanes<T, W>& alpha_n,
                                           const Lanes<T, W>& s_norm, const Lanes<T, W>& mu_bar,
+                                          const Lanes<T, W>& sigma_n, const Lanes<T, W>& slope_n,
                                           const LaneMask<W>& active, LaneMask<W>& ok, Lanes<T, W>& sigma_end) {
   using L = Lanes<T, W>;
   constexpr T kEps = FloatLimits<T>::kEpsilon;
   constexpr int kMaxSteps = 8;
   const L sqrt23(std::sqrt(T(2) / T(3))), two_mu = L(T(2)) * mu_bar;
-  L x(T(0));
+  L x(T(0)), slope = slope_n;
+  sigma_end = sigma_n;
   LaneMask<W> done = !active;  // and, below, lanes the hardening law cannot evaluate
   for (int it = 0; it < kMaxSteps; ++it) {
-    L slope;
-    h.evaluate(alpha_n + sqrt23 * x, sigma_end, slope, ok);
+    if (it > 0) h.evaluate(alpha_n + sqrt23 * x, sigma_end, slope, ok);
     const L f = s_norm - two_mu * x - sqrt23 * sigma_end;
     const L step = f / (-two_mu - L(T(2) / T(3)) * slope);
     done = done || !ok || abs(f) <= L(T(4) * kEps) * s_norm || abs(step) <= L(T(2) * kEps) * x;
