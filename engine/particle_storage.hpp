@@ -70,12 +70,15 @@ class ParticleStorage {
   }
 
   // Reorders and/or drops particles in every enabled column: new[i] = old[order[i]] for
-  // i < count (count <= size), using the backend for the copies.
+  // i < count (count <= size), using the backend for the copies. With `stress` false the stress
+  // columns tau are left as they are, out of order: for a caller that recomputes every particle's
+  // stress before anything reads it (the step's reorder, before the constitutive update).
   template <class Backend>
-  void gather(const std::uint32_t* order, std::size_t count, const Backend& backend) {
-#define FIRN_GATHER(name, n, kind, alloc, doc) \
-  for (auto& col : name##_)                    \
-    if (!col.empty()) gather_column(col, order, count, backend);
+  void gather(const std::uint32_t* order, std::size_t count, const Backend& backend, bool stress = true) {
+#define FIRN_GATHER(name, n, kind, alloc, doc)                   \
+  if (stress || Attribute::name != Attribute::tau)               \
+    for (auto& col : name##_)                                    \
+      if (!col.empty()) gather_column(col, order, count, backend);
     FIRN_PARTICLE_ATTRIBUTES(FIRN_GATHER)
 #undef FIRN_GATHER
     size_ = count;
