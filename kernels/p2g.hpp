@@ -61,10 +61,17 @@ FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGe
   constexpr int K = Ch::kCount, L = S * K;
   const T mv[4] = {T(0), m * v[0], m * v[1], m * v[2]};
   T Wz[L], P[L], L0[L], L1[L];
+  // Wz: w_c at lanes c K .. c K + K - 1, by selects, which GCC keeps in registers (issue 15: written
+  // to the stack element by element and read back as one vector, it stalled P2G; docs/performance.md).
+  FIRN_LANES
+  for (int l = 0; l < L; ++l) {
+    T wz = w[2][0];
+    for (int c = 1; c < S; ++c) wz = l >= c * K ? w[2][c] : wz;
+    Wz[l] = wz;
+  }
   for (int c = 0; c < S; ++c)
     for (int r = 0; r < K; ++r) {
       const int l = c * K + r;
-      Wz[l] = w[2][c];
       const bool impulse = r < 4;  // FLIP's lanes 4-7: pad and m v
       P[l] = impulse ? u0[r] + T(c) * col[2][r] : mv[r & 3];
       L0[l] = impulse ? col[0][r] : T(0);
