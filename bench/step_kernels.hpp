@@ -21,7 +21,8 @@
 
 namespace firn::bench_kernels {
 
-constexpr double kSide = 0.2;  // 20^3 cells x 8 particles = 64,000 particles at dx = 0.01
+constexpr double kSide = 0.2;       // 20^3 cells x 8 particles = 64,000 particles at dx = 0.01
+constexpr double kLargeSide = 0.4;  // 512,000 particles, for a GPU
 
 // Seconds spent in launches whose name starts with `prefix` during one step.
 inline double launch_seconds(const backend::LaunchProfile& profile, const std::string& prefix) {
@@ -34,7 +35,7 @@ inline double launch_seconds(const backend::LaunchProfile& profile, const std::s
 // make_backend(state) gives the backend for the run (the OpenMP instances read threads from the
 // argument).
 template <class Backend, class MakeBackend>
-void step_kernel(benchmark::State& state, const std::string& launch, const std::string& model,
+void step_kernel(benchmark::State& state, const std::string& launch, const std::string& model, double side,
                  const MakeBackend& make_backend) {
   const std::string why = backend_unavailable(backend_named(Backend::kName));
   if (!why.empty()) {
@@ -45,7 +46,7 @@ void step_kernel(benchmark::State& state, const std::string& launch, const std::
   Simulation<float, Backend> sim(cube_drop_config(), make_backend(state));
   const double dx = sim.config().dx;
   const int m = sim.add_material({"cube", model, 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
-  sim.add_particles(m, fill_box(sim.config().domain_min, dx, 2, {0.4, 0.3, 0.4}, {0.4 + kSide, 0.3 + kSide, 0.4 + kSide}),
+  sim.add_particles(m, fill_box(sim.config().domain_min, dx, 2, {0.4, 0.3, 0.4}, {0.4 + side, 0.3 + side, 0.4 + side}),
                     {0, -1, 0}, dx * dx * dx / 8);
   for (int s = 0; s < 3; ++s) sim.step();  // settle the layout (first reorder, grid allocation)
   backend::LaunchProfile profile;
@@ -62,10 +63,22 @@ void step_kernel(benchmark::State& state, const std::string& launch, const std::
   state.counters["particles"] = double(sim.particle_count());
 }
 
-// Registers every kernel for Backend as kernel/<launch>/<backend>, with `threads` as arguments
-// where it has any.
+// Registers launch for Backend as `name` over a cube of the given side, with `threads` as
+// arguments where the backend has any.
 template <class Backend, class MakeBackend>
-void register_step_kernels(const MakeBackend& make_backend, std::initializer_list<int> threads = {}) {
+void register_step_kernel(const std::string& name, const std::string& launch, const std::string& model, double side,
+                          const MakeBackend& make_backend, std::initializer_list<int> threads = {}) {
+  auto* b = benchmark::RegisterBenchmark(name.c_str(), step_kernel<Backend, MakeBackend>, launch, model, side,
+                                         make_backend);
+  for (int t : threads) b->Arg(t);
+  b->UseManualTime()->Unit(benchmark::kMillisecond);
+}
+
+// Registers every kernel for Backend as kernel/<launch>/<backend><suffix> over a cube of the given
+// side, with `threads` as arguments where it has any.
+template <class Backend, class MakeBackend>
+void register_step_kernels(const MakeBackend& make_backend, std::initializer_list<int> threads = {},
+                           double side = kSide, const std::string& suffix = "") {
   const std::pair<const char*, const char*> kernels[] = {
       {"bin.", "neo_hookean"},       {"constitutive.neo_hookean", "neo_hookean"},
       {"constitutive.fixed_corotated", "fixed_corotated"}, {"p2g", "neo_hookean"},
@@ -74,11 +87,8 @@ void register_step_kernels(const MakeBackend& make_backend, std::initializer_lis
   };
   for (const auto& [launch, model] : kernels) {
     const std::string name = std::string("kernel/") + (std::string(launch) == "bin." ? "binning" : launch) + "/" +
-                             Backend::kName;
-    auto* b = benchmark::RegisterBenchmark(name.c_str(), step_kernel<Backend, MakeBackend>, std::string(launch),
-                                           std::string(model), make_backend);
-    for (int t : threads) b->Arg(t);
-    b->UseManualTime()->Unit(benchmark::kMillisecond);
+                             Backend::kName + suffix;
+    register_step_kernel<Backend>(name, launch, model, side, make_backend, threads);
   }
 }
 

@@ -72,10 +72,14 @@ struct BlockScratch {
     set_origin(block);
     for (int i = 0; i < kNodes * kChannels; ++i) values[i] = T(0);
   }
-  // The scatter target of p2g_particle: nodes (i, j, k .. k + kRow - 1) are consecutive here.
+  // The first channel of global node (i, j, k); nodes (i, j, k .. k + n) are consecutive.
+  FIRN_HD T* node(int i, int j, int k) {
+    return values + (((i - origin[0]) * kSpan + (j - origin[1])) * kSpan + (k - origin[2])) * kChannels;
+  }
+  // The scatter target of p2g_particle: nodes (i, j, k .. k + kRow - 1).
   template <int kRow>
   FIRN_HD void add_row(int i, int j, int k, const T* v) {
-    T* node = values + (((i - origin[0]) * kSpan + (j - origin[1])) * kSpan + (k - origin[2])) * kChannels;
+    T* node = this->node(i, j, k);
     FIRN_LANES
     for (int c = 0; c < kRow * kChannels; ++c) node[c] += v[c];
   }

@@ -8,13 +8,15 @@
 //     (shared memory), then the blocks' partials by the same tree in a second launch.
 //   scatter_blocks (P2G): one thread block per grid block, colour after colour as on the CPU (same
 //     colour blocks never share a node, so the flush into the grid needs no atomics). The block's
-//     scratch lives in shared memory. Threads take the block's particles in rounds of kThreads;
-//     each stages its particle's contributions in shared memory, then each thread owns scratch
-//     nodes and adds the round's staged contributions to them in particle order. So every node
-//     receives the same additions in the same order as the CPU scatter (the scratch then the
-//     flush), with no atomics: the price is that a node thread tests every particle of the round
-//     (kThreads x nodes tests per round), against one float atomicAdd per contribution (27 or 64
-//     per particle) whose order, and so whose rounding, changes from run to run.
+//     scratch lives in shared memory. The block's particles go in rounds of as many as fit in
+//     shared memory (at most 64): each is staged (its contributions in shared memory) by one
+//     thread; bit masks (mark_bases) say which staged particles have their stencil base at each
+//     position of the block along each axis, so each thread, owning some scratch nodes, finds the
+//     particles that touch a node (touching_node) and adds their contributions in particle order.
+//     So every node receives the same additions in the same order as the CPU scatter (the scratch
+//     then the flush), with no atomics. The price, measured against one float atomicAdd per
+//     contribution whose order, and so whose rounding, changes from run to run
+//     (ScatterOrder::atomic, kept for that measurement), is in docs/cuda.md.
 //   gather_blocks (G2P): one thread block per grid block loads the window into shared memory,
 //     threads take the particles, and the per-block results are reduced by the fixed tree.
 // Memory: the backend's buffers are CUDA managed memory (cudaMallocManaged), which both the device
@@ -125,19 +127,50 @@ using StagedOf = StagedParticle<typename S::Value, S::kSupport, S::kChannels>;
 
 // Particles staged per round: as many as fit beside the scratch, at most 64.
 template <class S>
-constexpr int scatter_threads() {
+constexpr int scatter_round() {
   const std::size_t room = (kSharedBytes - sizeof(typename S::Scratch)) / sizeof(StagedOf<S>);
   return room >= 64 ? 64 : room >= 1 ? int(room) : 1;
 }
 
-// One thread block per grid block of one colour (see the top of this file).
+// The particles of a scatter round as bits (particle q of the round is bit q).
+using RoundMask = unsigned long long;
+
+// Run by the first kWords warps after a round is staged: bit q of masks[d][v] is set when staged
+// particle q has its stencil base node at v along axis d, counted from the block's first node
+// (binning puts it inside the block: 0 <= v < kBlockSize).
+template <class Staged, int kWords>
+__device__ void mark_bases(const Staged* staged, int count, const int origin[3],
+                           std::uint32_t (&masks)[3][kBlockSize][kWords]) {
+  const int q = threadIdx.x;
+  for (int d = 0; d < 3; ++d) {
+    const int base = q < count ? staged[q].base[d] - origin[d] : -1;
+    for (int v = 0; v < kBlockSize; ++v) {
+      const std::uint32_t bits = __ballot_sync(0xffffffffu, base == v);
+      if (q % 32 == 0) masks[d][v][q / 32] = bits;
+    }
+  }
+}
+
+// The staged particles whose stencil covers global node g: along each axis, the base lies in
+// [g - kSupport + 1, g].
+template <int kSupport, int kWords>
+__device__ RoundMask touching_node(const std::uint32_t (&masks)[3][kBlockSize][kWords], const int origin[3],
+                                   const int g[3]) {
+  RoundMask touching = ~RoundMask(0);
+  for (int d = 0; d < 3; ++d) {
+    const int a = g[d] - origin[d];
+    RoundMask axis = 0;
+    for (int v = a - kSupport + 1 > 0 ? a - kSupport + 1 : 0; v <= a && v < kBlockSize; ++v)
+      for (int w = 0; w < kWords; ++w) axis |= RoundMask(masks[d][v][w]) << (32 * w);
+    touching &= axis;
+  }
+  return touching;
+}
+
+// Opens grid block b's scratch for a scatter launch: its origin set and its values zeroed.
 template <class S>
-__global__ void scatter_colour(const std::uint32_t* blocks, S scatter) {
+__device__ void open_scratch(const S& scatter, std::uint32_t b, typename S::Scratch& scratch) {
   using Scratch = typename S::Scratch;
-  constexpr int kRound = scatter_threads<S>();
-  __shared__ Scratch scratch;
-  __shared__ StagedOf<S> staged[kRound];
-  const std::uint32_t b = blocks[blockIdx.x];
   if (threadIdx.x == 0) {
     int block[3];
     scatter.grid.box.coords(b, block);
@@ -145,27 +178,80 @@ __global__ void scatter_colour(const std::uint32_t* blocks, S scatter) {
   }
   for (int i = threadIdx.x; i < Scratch::kNodes * S::kChannels; i += blockDim.x) scratch.values[i] = 0;
   __syncthreads();
+}
+
+// Adds the scratch into the grid (after a __syncthreads).
+template <class S>
+__device__ void flush_scratch(const S& scatter, const typename S::Scratch& scratch) {
+  for (int n = threadIdx.x; n < S::Scratch::kNodes; n += blockDim.x) scratch.flush_node(scatter.grid, n);
+}
+
+// One thread block per grid block of one colour, in the fixed order (see the top of this file).
+template <class S>
+__global__ void scatter_colour(const std::uint32_t* blocks, S scatter) {
+  using Scratch = typename S::Scratch;
+  using T = typename S::Value;
+  constexpr int kRound = scatter_round<S>();
+  constexpr int kWords = (kRound + 31) / 32;
+  __shared__ Scratch scratch;
+  __shared__ StagedOf<S> staged[kRound];
+  __shared__ std::uint32_t base_masks[3][kBlockSize][kWords];
+  const std::uint32_t b = blocks[blockIdx.x];
+  open_scratch(scatter, b, scratch);
   for (std::size_t m = 0; m < scatter.bins.material_count; ++m) {
     const std::uint32_t end = scatter.bins.bucket_end(m, b);
     for (std::uint32_t round = scatter.bins.bucket_begin(m, b); round < end; round += kRound) {
       const int count = end - round < std::uint32_t(kRound) ? int(end - round) : kRound;
-      if (int(threadIdx.x) < count) {
-        staged[threadIdx.x].count = 0;
-        scatter.particle(round + threadIdx.x, staged[threadIdx.x]);
+      for (int q = threadIdx.x; q < count; q += blockDim.x) {
+        staged[q].count = 0;
+        scatter.particle(round + q, staged[q]);
       }
+      __syncthreads();
+      if (threadIdx.x < 32 * kWords) mark_bases(staged, count, scratch.origin, base_masks);
       __syncthreads();
       for (int n = threadIdx.x; n < Scratch::kNodes; n += blockDim.x) {
         int g[3];
         window_node<S::kSpan>(scratch.origin, n, g);
         auto* node = scratch.values + n * S::kChannels;
-        for (int q = 0; q < count; ++q)
-          if (const auto* v = staged[q].at(g))
-            for (int c = 0; c < S::kChannels; ++c) node[c] += v[c];
+        for (RoundMask touching = touching_node<S::kSupport>(base_masks, scratch.origin, g); touching;
+             touching &= touching - 1) {
+          const T* v = staged[__ffsll(static_cast<long long>(touching)) - 1].at(g);
+          for (int c = 0; c < S::kChannels; ++c) node[c] += v[c];
+        }
       }
       __syncthreads();
     }
   }
-  for (int n = threadIdx.x; n < Scratch::kNodes; n += blockDim.x) scratch.flush_node(scatter.grid, n);
+  flush_scratch(scatter, scratch);
+}
+
+// The scatter target of ScatterOrder::atomic: each contribution added to the shared scratch by a
+// float atomicAdd.
+template <class Scratch, int kChannels>
+struct AtomicScratchTarget {
+  Scratch* scratch;
+  template <int kRow, class T>
+  __device__ void add_row(int i, int j, int k, const T* v) const {
+    T* node = scratch->node(i, j, k);
+    for (int c = 0; c < kRow * kChannels; ++c) atomicAdd(node + c, v[c]);
+  }
+};
+
+// One thread block per grid block of one colour, each thread adding its particles' contributions
+// by float atomics (ScatterOrder::atomic): no staging, an order that changes from run to run.
+template <class S>
+__global__ void scatter_colour_atomic(const std::uint32_t* blocks, S scatter) {
+  using Scratch = typename S::Scratch;
+  __shared__ Scratch scratch;
+  const std::uint32_t b = blocks[blockIdx.x];
+  open_scratch(scatter, b, scratch);
+  const AtomicScratchTarget<Scratch, S::kChannels> target{&scratch};
+  for (std::size_t m = 0; m < scatter.bins.material_count; ++m)
+    for (std::uint32_t s = scatter.bins.bucket_begin(m, b) + threadIdx.x, e = scatter.bins.bucket_end(m, b); s < e;
+         s += blockDim.x)
+      scatter.particle(s, target);
+  __syncthreads();
+  flush_scratch(scatter, scratch);
 }
 
 // One thread block per grid block: the window in shared memory, the particles over the threads,
@@ -236,10 +322,20 @@ inline unsigned grid_size(std::size_t n, int threads) { return unsigned((n + std
 
 }  // namespace cuda_detail
 
+// The order in which the P2G block scatter adds contributions (see the top of this file): `fixed`,
+// the deterministic default, or `atomic` (float atomicAdd into the shared scratch, an order that
+// changes from run to run), kept to measure what determinism costs (kernel/p2g/cuda_atomic in
+// bench/step_kernels.hpp, docs/cuda.md).
+enum class ScatterOrder { fixed, atomic };
+
 struct Cuda {
   static constexpr const char* kName = "cuda";
   static constexpr int kVectorBytes = 0;  // lanes per batch: kernels/lanes.hpp
   LaunchProfile* profile = nullptr;
+  ScatterOrder scatter_order = ScatterOrder::fixed;
+  // Threads per block of the fixed-order scatter: a round's particles are staged by the first
+  // threads, and its nodes are summed by all of them.
+  int scatter_block_threads = cuda_detail::kThreads;
 
   int threads() const { return 1; }
   static const MemorySpace& memory() {
@@ -296,9 +392,12 @@ struct Cuda {
     launch(name, [&] {
       for (int c = 0; c < BlockColouring::kColours; ++c) {
         const std::size_t count = colouring.begin[c + 1] - colouring.begin[c];
-        if (count)
-          cuda_detail::scatter_colour<S>
-              <<<unsigned(count), cuda_detail::scatter_threads<S>()>>>(colouring.blocks + colouring.begin[c], scatter);
+        const std::uint32_t* blocks = colouring.blocks + colouring.begin[c];
+        if (count == 0) continue;
+        if (scatter_order == ScatterOrder::atomic)
+          cuda_detail::scatter_colour_atomic<S><<<unsigned(count), cuda_detail::kThreads>>>(blocks, scatter);
+        else
+          cuda_detail::scatter_colour<S><<<unsigned(count), unsigned(scatter_block_threads)>>>(blocks, scatter);
       }
     });
   }
