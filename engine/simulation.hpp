@@ -26,6 +26,7 @@
 #include <variant>
 #include <vector>
 
+#include "engine/block_compaction.hpp"
 #include "engine/collider_body.hpp"
 #include "engine/elastic_moduli.hpp"
 #include "engine/materials.hpp"
@@ -46,6 +47,7 @@
 #include "kernels/guard_summary.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/motion_sums.hpp"
+#include "kernels/particle_regroup.hpp"
 #include "kernels/particle_state.hpp"
 #include "kernels/shape_functions.hpp"
 #include "kernels/step/collider_sums.hpp"
@@ -181,7 +183,7 @@ class Simulation {
     const std::size_t n0 = storage_.size();
     if (prepared_)  // particles already grouped: restate their materials before staging more
       for (std::size_t m = 0; m < materials_.size(); ++m)
-        staged_material_.insert(staged_material_.end(), materials_[m].range.end - materials_[m].range.begin, int(m));
+        staged_.push_back({int(m), materials_[m].range.begin, materials_[m].range.end - materials_[m].range.begin});
     storage_.resize(n0 + positions.size());
     ParticleView<T> pv = storage_.view();
     const T mass = T(materials_[material].info.density * volume);
@@ -198,7 +200,7 @@ class Simulation {
       pv.vol0[p] = T(volume);
       pv.id[p] = next_id_++;
     }
-    staged_material_.insert(staged_material_.end(), positions.size(), material);
+    staged_.push_back({int(material), n0, positions.size()});
     prepared_ = false;
   }
 
@@ -212,15 +214,22 @@ class Simulation {
         "particles.count_removed", pv.n, std::size_t(0),
         [=] FIRN_HD_LAMBDA(std::size_t p, std::size_t& acc) { acc += remove(pv, p) ? 1 : 0; }, Sum{});
     if (doomed == 0) return 0;
-    AlignedVector<std::uint32_t> keep;
-    keep.reserve(pv.n - doomed);
+    // Each material's kept particles by a compaction on the backend, in their order.
+    if (regroup_.size() < pv.n - doomed) regroup_.resize(pv.n - doomed);
+    std::size_t kept = 0;
     for (auto& m : materials_) {
-      const std::size_t begin = keep.size();
-      for (std::size_t p = m.range.begin; p < m.range.end; ++p)
-        if (!remove(pv, p)) keep.push_back(std::uint32_t(p));
-      m.range = {begin, keep.size()};
+      const std::size_t first = m.range.begin;
+      if (m.range.end == first) {  // no launches for a material without particles
+        m.range = {kept, kept};
+        continue;
+      }
+      const std::size_t count =
+          keep_.count(m.range.end - first, KeptParticle<T, Predicate>{remove, pv, first}, backend_)[1];
+      keep_.write(KeptList{regroup_.data() + kept, first}, backend_);
+      m.range = {kept, kept + count};
+      kept += count;
     }
-    storage_.gather(keep.data(), keep.size(), backend_);
+    storage_.gather(regroup_.data(), kept, backend_);
     return doomed;
   }
 
@@ -290,16 +299,27 @@ class Simulation {
   // the first step; call it yourself to read particles in their final layout before stepping.
   void prepare() {
     if (prepared_) return;
-    AlignedVector<std::uint32_t> order;
-    order.reserve(storage_.size());
+    // Group the particles by material, each material's runs in the order they were staged; the
+    // columns move (on the backend) only where that is not the order they have.
+    runs_.clear();
+    std::size_t next = 0;
+    bool in_place = true;
     for (std::size_t m = 0; m < materials_.size(); ++m) {
-      materials_[m].range.begin = order.size();
-      for (std::size_t p = 0; p < staged_material_.size(); ++p)
-        if (staged_material_[p] == int(m)) order.push_back(std::uint32_t(p));
-      materials_[m].range.end = order.size();
+      materials_[m].range.begin = next;
+      for (const StagedRun& r : staged_)
+        if (r.material == int(m) && r.count) {
+          runs_.push_back({next, r.begin, r.count});
+          in_place = in_place && r.begin == next;
+          next += r.count;
+        }
+      materials_[m].range.end = next;
     }
-    staged_material_.clear();
-    storage_.gather(order.data(), order.size(), backend_);
+    staged_.clear();
+    if (!in_place) {
+      if (regroup_.size() < next) regroup_.resize(next);
+      backend_.parallel_for("particles.group", next, RunOrder{runs_.data(), runs_.size(), regroup_.data()});
+      storage_.gather(regroup_.data(), next, backend_);
+    }
     const ParticleView<T> pv = storage_.view();
     max_speed_ = backend_.parallel_reduce(
         "particles.max_speed", pv.n, T(0),
@@ -307,9 +327,10 @@ class Simulation {
           acc = std::max(acc, std::sqrt(pv.v[0][p] * pv.v[0][p] + pv.v[1][p] * pv.v[1][p] + pv.v[2][p] * pv.v[2][p]));
         },
         Max{});
-    double lightest = std::numeric_limits<double>::max();
-    for (std::size_t p = 0; p < pv.n; ++p) lightest = std::min(lightest, double(pv.mass[p]));
-    min_node_mass_ = T(kEmptyNodeMassFraction * lightest);
+    const T lightest = backend_.parallel_reduce(
+        "particles.min_mass", pv.n, std::numeric_limits<T>::max(),
+        [=] FIRN_HD_LAMBDA(std::size_t p, T& acc) { acc = std::min(acc, pv.mass[p]); }, Min{});
+    min_node_mass_ = T(kEmptyNodeMassFraction * (pv.n ? double(lightest) : std::numeric_limits<double>::max()));
     prepared_ = true;
   }
 
@@ -914,7 +935,15 @@ class Simulation {
   struct Pressure {
     double value = 0, ramp_time = 0;  // Pa, s
   } pressure_;
-  std::vector<int> staged_material_;  // material of each particle added since the last prepare()
+  // The particles added since the last prepare(), as runs of one material each: [begin, begin + count).
+  struct StagedRun {
+    int material;
+    std::size_t begin, count;
+  };
+  std::vector<StagedRun> staged_;
+  AlignedVector<ParticleRun> runs_;         // prepare()'s grouping
+  AlignedVector<std::uint32_t> regroup_;    // the permutation prepare() or remove_particles() applies
+  BlockCompaction<1> keep_{{"particles.keep.count", "particles.keep.prefix", "particles.keep.write"}};
   SparseGrid<T> grid_;
   // Multi-velocity-field contact: group B's grid, the normals' grid and group B's grid-update
   // buffers; allocated and used only while both groups have particles (contact_active()).
