@@ -333,8 +333,9 @@ struct Cuda {
   static constexpr int kVectorBytes = 0;  // lanes per batch: kernels/lanes.hpp
   LaunchProfile* profile = nullptr;
   ScatterOrder scatter_order = ScatterOrder::fixed;
-  // Threads per block of the fixed-order scatter: a round's particles are staged by the first
-  // threads, and its nodes are summed by all of them.
+  // Threads per block of the fixed-order scatter, a multiple of 32 and at least 64: a round's
+  // particles are staged and their masks made by the first threads, and its nodes are summed by
+  // all of them.
   int scatter_block_threads = cuda_detail::kThreads;
 
   int threads() const { return 1; }
