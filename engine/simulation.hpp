@@ -34,6 +34,7 @@
 #include "engine/particle_fields.hpp"
 #include "engine/particle_fill.hpp"
 #include "engine/particle_storage.hpp"
+#include "engine/radix_order.hpp"
 #include "engine/state_stream.hpp"
 #include "engine/sparse_grid.hpp"
 #include "engine/stability_guard.hpp"
@@ -395,12 +396,15 @@ class Simulation {
     return out;
   }
 
-  // Physical indices of the particles in increasing id.
-  std::vector<std::uint32_t> id_order() {
+  // Physical indices of the particles in increasing id (ids are unique), into `order`, with a second
+  // buffer `scratch` (engine/radix_order.hpp); the form that returns them allocates both.
+  void id_order(std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& scratch) {
     const ParticleView<T> pv = storage_.view();
-    std::vector<std::uint32_t> order(pv.n);
-    for (std::size_t p = 0; p < pv.n; ++p) order[p] = std::uint32_t(p);
-    std::sort(order.begin(), order.end(), [&pv](std::uint32_t a, std::uint32_t b) { return pv.id[a] < pv.id[b]; });
+    radix_order(pv.id, pv.n, order, scratch);
+  }
+  std::vector<std::uint32_t> id_order() {
+    std::vector<std::uint32_t> order, scratch;
+    id_order(order, scratch);
     return order;
   }
 

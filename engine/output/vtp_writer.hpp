@@ -6,69 +6,123 @@
 // (plastic_strain, Jp).
 #pragma once
 
-#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <type_traits>
 #include <vector>
 
-#include "engine/output/atomic_file.hpp"
 #include "engine/particle_fields.hpp"
 #include "engine/simulation.hpp"
+#include "kernels/backend/openmp.hpp"
 
 namespace firn {
 
-struct VtpArray {
+// VTK's name of the value type S.
+template <class S>
+constexpr const char* vtp_type() {
+  static_assert(sizeof(S) == 4 || std::is_same_v<S, double>, "Float32, Float64, Int32 or UInt32");
+  return std::is_same_v<S, float>           ? "Float32"
+         : std::is_same_v<S, double>        ? "Float64"
+         : std::is_same_v<S, std::int32_t>  ? "Int32"
+                                            : "UInt32";
+}
+
+// An array of a .vtp file: its name, VTK type, components per point and the bytes of one value.
+struct VtpLayout {
   std::string name;
-  std::string type;  // VTK type name: Float32, Float64, Int32, UInt32
+  std::string type;
   int components;
+  std::size_t value_bytes;
+};
+
+template <class S>
+VtpLayout vtp_layout(std::string name, int components) {
+  return {std::move(name), vtp_type<S>(), components, sizeof(S)};
+}
+
+// Writes `points` points to `path` atomically, streaming each array from a buffer: `fill(k, out)`
+// writes array k's points x components values into `out`, k indexing `point_data` and then
+// `positions` (k = point_data.size()). `buffer` is reused (and grown) for every array, so a caller
+// that writes frame after frame with the same buffer allocates nothing after the first.
+void write_vtp(const std::string& path, std::size_t points, const std::vector<VtpLayout>& point_data,
+               const VtpLayout& positions, const std::function<void(std::size_t, unsigned char*)>& fill,
+               std::vector<unsigned char>& buffer);
+
+// An array with its values, for the form below.
+struct VtpArray {
+  VtpLayout layout;
   std::vector<unsigned char> bytes;
 };
 
-// Writes the points and arrays (values in the points' order) to `path` atomically.
-void write_vtp(const std::string& path, std::size_t points, const VtpArray& positions, const std::vector<VtpArray>& arrays);
-
 template <class S>
 VtpArray vtp_array(std::string name, int components, const std::vector<S>& values) {
-  const char* type = std::is_same_v<S, float>           ? "Float32"
-                     : std::is_same_v<S, double>        ? "Float64"
-                     : std::is_same_v<S, std::int32_t>  ? "Int32"
-                                                        : "UInt32";
-  VtpArray a{std::move(name), type, components, std::vector<unsigned char>(values.size() * sizeof(S))};
+  VtpArray a{vtp_layout<S>(std::move(name), components), std::vector<unsigned char>(values.size() * sizeof(S))};
   std::memcpy(a.bytes.data(), values.data(), a.bytes.size());
   return a;
 }
 
+// write_vtp of arrays whose values are at hand.
+void write_vtp(const std::string& path, std::size_t points, const VtpArray& positions, const std::vector<VtpArray>& arrays);
+
+// Writes a simulation's particle frames, keeping its buffers (the id order and one array's bytes)
+// from frame to frame. Each array is gathered in id order by the OpenMP backend's threads when the
+// run is on it (its thread count), on the calling thread otherwise.
+class ParticleVtpWriter {
+ public:
+  template <class T, class Backend>
+  void write(const std::string& path, Simulation<T, Backend>& sim) {
+    using Sim = Simulation<T, Backend>;
+    const ParticleView<T> pv = sim.particles();
+    sim.id_order(by_id_, scratch_ids_);
+    const std::uint32_t* const by_id = by_id_.data();
+    int threads = 1;
+    if constexpr (std::is_same_v<Backend, backend::OpenMP>) threads = sim.backend().threads();
+    const backend::OpenMP host(threads);
+    // out[i] = value(p) for the particle p of i-th smallest id.
+    auto gather = [&](auto* out, auto value) {
+      host.parallel_for("output.vtp", pv.n, [=](std::size_t i) { out[i] = value(by_id[i]); });
+    };
+    auto vectors = [&](unsigned char* bytes, T* const* column) {
+      T* const out = reinterpret_cast<T*>(bytes);
+      host.parallel_for("output.vtp", pv.n, [=](std::size_t i) {
+        for (int d = 0; d < 3; ++d) out[3 * i + d] = column[d][by_id[i]];
+      });
+    };
+    enum class Field { velocity, id, material, J, von_mises, plastic_strain, Jp };
+    std::vector<VtpLayout> arrays = {vtp_layout<T>("velocity", 3), vtp_layout<std::uint32_t>("id", 1),
+                                     vtp_layout<std::int32_t>("material", 1), vtp_layout<T>("J", 1),
+                                     vtp_layout<T>("von_mises", 1)};
+    std::vector<Field> fields = {Field::velocity, Field::id, Field::material, Field::J, Field::von_mises};
+    if (pv.alpha) arrays.push_back(vtp_layout<T>("plastic_strain", 1)), fields.push_back(Field::plastic_strain);
+    if (pv.Jp) arrays.push_back(vtp_layout<T>("Jp", 1)), fields.push_back(Field::Jp);
+    auto fill = [&](std::size_t k, unsigned char* bytes) {
+      T* const values = reinterpret_cast<T*>(bytes);
+      if (k == fields.size()) return vectors(bytes, pv.x);
+      switch (fields[k]) {
+        case Field::velocity: return vectors(bytes, pv.v);
+        case Field::id: return gather(reinterpret_cast<std::uint32_t*>(bytes), [=](std::size_t p) { return pv.id[p]; });
+        case Field::material:
+          return gather(reinterpret_cast<std::int32_t*>(bytes), [&sim](std::size_t p) { return sim.material_of(p); });
+        case Field::J: return gather(values, [=](std::size_t p) { return Sim::total_J(pv, p); });
+        case Field::von_mises: return gather(values, [=](std::size_t p) { return particle_von_mises(pv, p); });
+        case Field::plastic_strain: return gather(values, [=](std::size_t p) { return pv.alpha[p]; });
+        case Field::Jp: return gather(values, [=](std::size_t p) { return pv.Jp[p]; });
+      }
+    };
+    write_vtp(path, pv.n, arrays, vtp_layout<T>("points", 3), fill, buffer_);
+  }
+
+ private:
+  std::vector<std::uint32_t> by_id_, scratch_ids_;
+  std::vector<unsigned char> buffer_;
+};
+
+// One frame, buffers and all (tests; a run keeps a ParticleVtpWriter).
 template <class T, class Backend>
 void write_particles_vtp(const std::string& path, Simulation<T, Backend>& sim) {
-  const ParticleView<T> pv = sim.particles();
-  const std::size_t n = pv.n;
-  const std::vector<std::uint32_t> by_id = sim.id_order();
-  std::vector<T> x(3 * n), v(3 * n), J(n), vm(n), alpha, Jp;
-  std::vector<std::int32_t> material(n);
-  std::vector<std::uint32_t> id(n);
-  if (pv.alpha) alpha.resize(n);
-  if (pv.Jp) Jp.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t p = by_id[i];
-    for (int d = 0; d < 3; ++d) x[3 * i + d] = pv.x[d][p], v[3 * i + d] = pv.v[d][p];
-    id[i] = pv.id[p];
-    material[i] = sim.material_of(p);
-    J[i] = Simulation<T, Backend>::total_J(pv, p);
-    vm[i] = particle_von_mises(pv, p);
-    if (pv.alpha) alpha[i] = pv.alpha[p];
-    if (pv.Jp) Jp[i] = pv.Jp[p];
-  }
-  std::vector<VtpArray> arrays;
-  arrays.push_back(vtp_array("velocity", 3, v));
-  arrays.push_back(vtp_array("id", 1, id));
-  arrays.push_back(vtp_array("material", 1, material));
-  arrays.push_back(vtp_array("J", 1, J));
-  arrays.push_back(vtp_array("von_mises", 1, vm));
-  if (pv.alpha) arrays.push_back(vtp_array("plastic_strain", 1, alpha));
-  if (pv.Jp) arrays.push_back(vtp_array("Jp", 1, Jp));
-  write_vtp(path, n, vtp_array("points", 3, x), arrays);
+  ParticleVtpWriter().write(path, sim);
 }
 
 }  // namespace firn

@@ -101,6 +101,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
   if (!options.resume) write_file_atomically(options.out_dir + "/scene.resolved.toml", resolved_toml);
   double step_seconds = progress.step_seconds;
 
+  ParticleVtpWriter particle_frames;
   auto write_frame = [&](int frame) {
     const Diagnostics d = sim.diagnostics();
     if (frame == 0) progress.initial_energy = d.kinetic_energy + d.elastic_energy;
@@ -114,7 +115,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
                   d.momentum[0], d.momentum[1], d.momentum[2], d.max_speed, d.min_J, b.plastic, b.gravity, b.colliders,
                   b.loads, residual);
     progress.metrics += row + scene_metrics->row(sim, map_dir.empty() ? "" : map_dir + "/" + frame_name(frame)) + "\n";
-    write_particles_vtp(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
+    particle_frames.write(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
     write_file_atomically(options.out_dir + "/metrics.csv", progress.metrics);
     if (options.on_frame) {
       const ParticleView<T> view = sim.particles();
