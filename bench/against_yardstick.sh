@@ -16,10 +16,11 @@ echo "cpu $(lscpu | sed -n 's/^Model name: *//p'), threads $THREADS, $STEPS step
 for _ in $(seq "$REPS"); do
   echo "firn $("$FIRN" bench step --problem cube_drop --steps "$STEPS" --threads "$THREADS" | awk '$1 == "particle_steps_per_second" {print $2}')"
   echo "yardstick $(OMP_NUM_THREADS=$THREADS "$yardstick" 100 "$STEPS" | awk '$1 == "particle_steps_per_second" {print $2}')"
-done | tee /dev/stderr | python3 -c '
+done | python3 -c '
 import collections, statistics, sys
 runs = collections.defaultdict(list)
 for line in sys.stdin:
+    print(line, end="", flush=True)  # each run as it ends
     name, rate = line.split()
     runs[name].append(float(rate))
 firn, yard = statistics.median(runs["firn"]), statistics.median(runs["yardstick"])

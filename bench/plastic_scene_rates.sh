@@ -20,10 +20,11 @@ for _ in $(seq "$REPS"); do
   echo "tire_on_snow $(rate "$out/tire")"
   "$FIRN" run "$SCENES/snowball_pair.toml" --threads "$THREADS" --out "$out/pair" > /dev/null
   echo "snowball_pair $(rate "$out/pair")"
-done | tee /dev/stderr | python3 -c '
+done | python3 -c '
 import collections, statistics, sys
 runs = collections.defaultdict(list)
 for line in sys.stdin:
+    print(line, end="", flush=True)  # each run as it ends
     name, rate = line.split()
     runs[name].append(float(rate))
 cube = statistics.median(runs["cube_drop"])
