@@ -51,7 +51,8 @@ void add_render_command(CLI::App& app) {
     }
     const auto files = viz::particle_files(o->dir + "/particles");
     if (files.empty()) {
-      std::fprintf(stderr, "firn render: no particle files in %s/particles\n", o->dir.c_str());
+      std::fprintf(stderr, "firn render: no particle files in %s/particles%s\n", o->dir.c_str(),
+                   scene.spec.output.particles ? "" : " (the run had output.particles = false)");
       set_exit_status(2);
       return;
     }

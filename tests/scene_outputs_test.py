@@ -131,6 +131,19 @@ def test_profile():
     check("launch_seconds" not in summary(plain), "a run without --profile writes launch_seconds")
 
 
+def test_no_particles():
+    """[output] particles = false writes no .vtp and leaves the run and its other outputs as they were."""
+    plain = preview_run("with_particles")
+    out = preview_run("no_particles", "output.particles=false")
+    check(not os.path.exists(os.path.join(out, "particles")), "output.particles = false made particles/")
+    check(glob.glob(os.path.join(plain, "particles", "*.vtp")), "the default run wrote no .vtp")
+    a, b = summary(plain), summary(out)
+    check(a["state_hash"] == b["state_hash"] and a["steps"] == b["steps"], "output.particles changed the run")
+    check(len(metrics(out)) == len(metrics(plain)), "output.particles changed metrics.csv's frames")
+    r = run(["render", out])
+    check(r.returncode == 2 and "output.particles = false" in r.stderr, f"firn render without particles: {r.stderr}")
+
+
 def test_interrupt():
     out = fresh("interrupt")
     p = subprocess.Popen([FIRN, "run", SCENE, "--preview", "--out", out, "--threads", "1",

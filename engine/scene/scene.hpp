@@ -88,6 +88,10 @@ struct MetricsSpec {
   int fragment_min_particles = 10;   // smaller clusters are spray, not fragments
 };
 
+struct OutputSpec {
+  bool particles = true;  // particles/NNNNN.vtp every frame
+};
+
 struct LoadSpec {
   Point region_min = {0, 0, 0}, region_max = {0, 0, 0};  // particles inside at t = 0 carry the load
   Point force = {0, 0, 0};                               // total force (N), shared by mass
@@ -132,6 +136,7 @@ struct SceneSpec {
   std::optional<TireSpec> tire;
   std::optional<ConveyorSpec> conveyor;
   MetricsSpec metrics;
+  OutputSpec output;
   RenderSpec render;
   int per_axis() const;  // cube root of particles_per_cell
 };

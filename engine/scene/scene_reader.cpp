@@ -517,7 +517,7 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
   for (const std::string& a : options.overrides) apply_override(ctx, root, a);
 
   const std::vector<std::string> sections = {"simulation", "walls", "materials", "bodies",  "colliders",
-                                             "tire",       "conveyor", "loads",   "contact", "metrics", "render"};
+                                             "tire",       "conveyor", "loads",   "contact", "metrics", "output", "render"};
   for (const auto& [name, node] : root) {
     const std::string key(name.str());
     if (std::find(sections.begin(), sections.end(), key) == sections.end())
@@ -811,7 +811,7 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
   }
   // [metrics], [render]
   {
-    toml::table mo, ro;
+    toml::table mo, oo, ro;
     {
       toml::table co;
       TableReader c(ctx, subtable(ctx, root, "contact", empty), scene_section("contact"), "contact", co);
@@ -829,6 +829,10 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     s.metrics.fragment_min_particles = int(m.integer("fragment_min_particles"));
     m.finish();
     out.insert("metrics", std::move(mo));
+    TableReader o(ctx, subtable(ctx, root, "output", empty), scene_section("output"), "output", oo);
+    s.output.particles = o.boolean("particles");
+    o.finish();
+    out.insert("output", std::move(oo));
     TableReader r(ctx, subtable(ctx, root, "render", empty), scene_section("render"), "render", ro);
     s.render.style = r.choice("style");
     s.render.color_by = r.choice("color_by");

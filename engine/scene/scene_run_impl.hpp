@@ -95,7 +95,8 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
         "plastic_work,gravity_work,collider_work,load_work,energy_residual" +
         scene_metrics->header() + "\n";
   }
-  make_directories(options.out_dir + "/particles");
+  make_directories(options.out_dir);
+  if (scene.output.particles) make_directories(options.out_dir + "/particles");
   const std::string map_dir = scene_metrics->map_dir().empty() ? "" : options.out_dir + "/" + scene_metrics->map_dir();
   if (!map_dir.empty()) make_directories(map_dir);
   if (!options.resume) write_file_atomically(options.out_dir + "/scene.resolved.toml", resolved_toml);
@@ -115,7 +116,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
                   d.momentum[0], d.momentum[1], d.momentum[2], d.max_speed, d.min_J, b.plastic, b.gravity, b.colliders,
                   b.loads, residual);
     progress.metrics += row + scene_metrics->row(sim, map_dir.empty() ? "" : map_dir + "/" + frame_name(frame)) + "\n";
-    particle_frames.write(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
+    if (scene.output.particles) particle_frames.write(options.out_dir + "/particles/" + frame_name(frame) + ".vtp", sim);
     write_file_atomically(options.out_dir + "/metrics.csv", progress.metrics);
     if (options.on_frame) {
       const ParticleView<T> view = sim.particles();

@@ -359,6 +359,14 @@ std::vector<SectionSpec> build_schema() {
                    {"fragment_min_particles", K::integer, Q::dimensionless, "10", false,
                     "clusters with fewer particles are spray, not fragments", 1, 1e9},
                }});
+  s.push_back({"output", false, "What a run writes every frame besides metrics.csv.",
+               {
+                   {"particles", K::boolean, Q::dimensionless, "true", false,
+                    "write particles/NNNNN.vtp (every particle's position, velocity and state; about 50 bytes "
+                    "per particle per frame, 2.5 GB for the 51 frames of the full-resolution tire on snow). false "
+                    "writes none: metrics.csv, summary.json, footprints, meshes and `--render` frames are "
+                    "unchanged, but `firn render DIR` has nothing to draw"},
+               }});
   s.push_back({"render", false, "How frames are drawn when rendering is on (`firn run --render`).",
                {
                    {"style", K::choice, Q::dimensionless, "\"spheres\"", false, "none, spheres or surface", -kInf,
