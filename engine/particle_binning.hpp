@@ -43,24 +43,30 @@ class ParticleBinning {
     material_count_ = 0;
     std::uint32_t* keys = keys_.data();
     std::size_t first_bad = kNone;
+    // Bounds in cell units as T and strides as size_t: no value the loop reads can alias the
+    // uint32 keys it stores (an int would), so the compiler keeps them all in registers.
+    const T origin[3] = {g.origin[0], g.origin[1], g.origin[2]}, inv_dx = g.inv_dx;
+    T limit[3];
+    for (int d = 0; d < 3; ++d) limit[d] = T(g.nodes[d] - ShapeT::kSupport + 1);
+    const std::size_t stride_y = std::size_t(blocks[2]), stride_x = std::size_t(blocks[1]) * stride_y;
     for (std::size_t m = 0; m < materials.size(); ++m) {
       if (materials[m].end == materials[m].begin) continue;
       const std::size_t begin = materials[m].begin;
-      const std::uint32_t key0 = std::uint32_t(material_count_++ * block_count_);
-      const BlockBox box{{blocks[0], blocks[1], blocks[2]}};
+      const std::size_t key0 = material_count_++ * block_count_;
       const std::size_t bad = backend.parallel_reduce(
           "bin.keys", materials[m].end - begin, kNone,
           [=] FIRN_HD_LAMBDA(std::size_t i, std::size_t& acc) {
             const std::size_t p = begin + i;
-            int bc[3];
+            std::size_t key = key0;
             bool inside = true;
             for (int d = 0; d < 3; ++d) {
-              const T s = (pv.x[d][p] - g.origin[d]) * g.inv_dx - ShapeT::kOffset;
-              // Negated comparisons also reject NaN.
-              if (!(s >= T(0) && s < T(g.nodes[d] - ShapeT::kSupport + 1))) inside = false;
-              bc[d] = inside ? int(s) >> kBlockShift : 0;
+              const T s = (pv.x[d][p] - origin[d]) * inv_dx - ShapeT::kOffset;
+              // Negated comparisons also reject NaN; past the first axis outside, block 0.
+              inside = inside && s >= T(0) && s < limit[d];
+              const std::size_t b = inside ? std::size_t(int(s) >> kBlockShift) : 0;
+              key += b * (d == 0 ? stride_x : d == 1 ? stride_y : 1);
             }
-            keys[p] = key0 + std::uint32_t(box.id(bc[0], bc[1], bc[2]));
+            keys[p] = std::uint32_t(key);
             if (!inside && p < acc) acc = p;
           },
           Min{});
