@@ -12,14 +12,21 @@
 
 namespace firn {
 
-// Fills `order` with the sorted indices; `scratch` is a second buffer of the same size (kept by a
-// caller that sorts every frame, so nothing is allocated after the first call).
+// The second buffer of indices and the digit counts, kept by a caller that sorts every frame so
+// that nothing is allocated after the first call.
+struct RadixBuffers {
+  std::vector<std::uint32_t> scratch, count;
+};
+
+// Fills `order` with the sorted indices.
 inline void radix_order(const std::uint32_t* keys, std::size_t n, std::vector<std::uint32_t>& order,
-                        std::vector<std::uint32_t>& scratch) {
+                        RadixBuffers& buffers) {
+  std::vector<std::uint32_t>& scratch = buffers.scratch;
+  std::vector<std::uint32_t>& count = buffers.count;
   order.resize(n);
   scratch.resize(n);
+  count.resize(1u << 16);
   for (std::size_t i = 0; i < n; ++i) order[i] = std::uint32_t(i);
-  std::vector<std::uint32_t> count(1u << 16);
   for (int shift = 0; shift < 32; shift += 16) {
     std::fill(count.begin(), count.end(), 0u);
     for (std::size_t i = 0; i < n; ++i) ++count[(keys[i] >> shift) & 0xffffu];

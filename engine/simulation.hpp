@@ -396,15 +396,16 @@ class Simulation {
     return out;
   }
 
-  // Physical indices of the particles in increasing id (ids are unique), into `order`, with a second
-  // buffer `scratch` (engine/radix_order.hpp); the form that returns them allocates both.
-  void id_order(std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& scratch) {
+  // Physical indices of the particles in increasing id (ids are unique), into `order`, with the
+  // sort's buffers (engine/radix_order.hpp); the form that returns them allocates all three.
+  void id_order(std::vector<std::uint32_t>& order, RadixBuffers& buffers) {
     const ParticleView<T> pv = storage_.view();
-    radix_order(pv.id, pv.n, order, scratch);
+    radix_order(pv.id, pv.n, order, buffers);
   }
   std::vector<std::uint32_t> id_order() {
-    std::vector<std::uint32_t> order, scratch;
-    id_order(order, scratch);
+    std::vector<std::uint32_t> order;
+    RadixBuffers buffers;
+    id_order(order, buffers);
     return order;
   }
 

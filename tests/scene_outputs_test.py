@@ -142,6 +142,9 @@ def test_no_particles():
     check(len(metrics(out)) == len(metrics(plain)), "output.particles changed metrics.csv's frames")
     r = run(["render", out])
     check(r.returncode == 2 and "output.particles = false" in r.stderr, f"firn render without particles: {r.stderr}")
+    r = run(["run", SCENE, "--preview", "--out", plain, "--set", "simulation.end_time=4 ms", "--set", "output.particles=false"])
+    check(r.returncode == 0 and not os.path.exists(os.path.join(plain, "particles")),
+          "a run without particle frames left an earlier run's frames in its folder")
 
 
 def test_interrupt():

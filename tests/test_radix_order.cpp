@@ -19,8 +19,9 @@ std::vector<std::uint32_t> stable_order(const std::vector<std::uint32_t>& keys) 
 }
 
 void expect_stable_order(const std::vector<std::uint32_t>& keys) {
-  std::vector<std::uint32_t> order, scratch;
-  radix_order(keys.data(), keys.size(), order, scratch);
+  std::vector<std::uint32_t> order;
+  RadixBuffers buffers;
+  radix_order(keys.data(), keys.size(), order, buffers);
   EXPECT_EQ(order, stable_order(keys));
 }
 
@@ -51,11 +52,12 @@ TEST(RadixOrder, OneDigitPassesAreSkippedCorrectly) {
 }
 
 TEST(RadixOrder, EmptyAndReusedBuffers) {
-  std::vector<std::uint32_t> order(5, 9u), scratch;
-  radix_order(nullptr, 0, order, scratch);
+  std::vector<std::uint32_t> order(5, 9u);
+  RadixBuffers buffers;
+  radix_order(nullptr, 0, order, buffers);
   EXPECT_TRUE(order.empty());
   const std::vector<std::uint32_t> keys = {5, 1, 4, 1, 3};
-  radix_order(keys.data(), keys.size(), order, scratch);
+  radix_order(keys.data(), keys.size(), order, buffers);
   EXPECT_EQ(order, (std::vector<std::uint32_t>{1, 3, 4, 2, 0}));
 }
 

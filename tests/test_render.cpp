@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <string>
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -421,6 +422,31 @@ TEST(VtpReader, ReadsWhatTheEngineWrites) {
   EXPECT_EQ(f.arrays.at("velocity").values[1], -2.0);
   EXPECT_EQ(f.arrays.at("J").values[0], 1.0);
   EXPECT_EQ(f.arrays.at("material").values[0], 0.0);
+}
+
+// A writer kept from frame to frame (as a run keeps it) writes a smaller frame after a larger one
+// byte for byte as a fresh writer does: nothing of the larger frame's buffers leaks into it.
+TEST(VtpReader, AKeptWriterWritesWhatAFreshOneDoes) {
+  SimulationConfig config;
+  auto sphere_sim = [&config](double radius) {
+    auto sim = std::make_unique<Simulation<float, backend::Serial>>(config);
+    const int snow = sim->add_material({"snow", "neo_hookean", 400, ElasticModuli::from_E_nu(1.4e5, 0.2)});
+    sim->add_particles(snow, fill_sphere(config.domain_min, config.dx, 2, {0.5, 0.5, 0.5}, radius), {1, -2, 0.5}, 1e-6);
+    sim->prepare();
+    return sim;
+  };
+  const auto large = sphere_sim(0.08), small = sphere_sim(0.05);
+  ASSERT_GT(large->particle_count(), small->particle_count());
+  ParticleVtpWriter kept;
+  kept.write(scratch("kept_large.vtp"), *large);
+  kept.write(scratch("kept_small.vtp"), *small);
+  write_particles_vtp(scratch("fresh_small.vtp"), *small);
+  auto bytes = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(scratch("kept_small.vtp")), bytes(scratch("fresh_small.vtp")));
+  EXPECT_EQ(read_vtp(scratch("kept_large.vtp")).points, large->particle_count());
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 #include "engine/output/vtp_writer.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
+#include <stdexcept>
 
 #include "engine/output/atomic_file.hpp"
 
@@ -57,7 +59,13 @@ void write_vtp(const std::string& path, std::size_t points, const std::vector<Vt
 
 void write_vtp(const std::string& path, std::size_t points, const VtpArray& positions, const std::vector<VtpArray>& arrays) {
   std::vector<VtpLayout> layouts;
-  for (const VtpArray& a : arrays) layouts.push_back(a.layout);
+  auto check_size = [points, &path](const VtpArray& a) {
+    if (a.bytes.size() != points * std::size_t(a.layout.components) * a.layout.value_bytes)
+      throw std::invalid_argument(path + ": array " + a.layout.name + " holds " + std::to_string(a.bytes.size()) +
+                                  " bytes, not " + std::to_string(points) + " points' worth");
+  };
+  check_size(positions);
+  for (const VtpArray& a : arrays) check_size(a), layouts.push_back(a.layout);
   std::vector<unsigned char> buffer;
   write_vtp(
       path, points, layouts, positions.layout,
@@ -66,6 +74,19 @@ void write_vtp(const std::string& path, std::size_t points, const VtpArray& posi
         std::copy(bytes.begin(), bytes.end(), out);
       },
       buffer);
+}
+
+void remove_particle_frames(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (!fs::is_directory(dir, error)) return;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() == 9 && name.substr(5) == ".vtp" &&
+        std::all_of(name.begin(), name.begin() + 5, [](char c) { return c >= '0' && c <= '9'; }))
+      fs::remove(entry.path());
+  }
+  fs::remove(dir, error);  // only if empty
 }
 
 }  // namespace firn

@@ -50,6 +50,10 @@ void write_vtp(const std::string& path, std::size_t points, const std::vector<Vt
                const VtpLayout& positions, const std::function<void(std::size_t, unsigned char*)>& fill,
                std::vector<unsigned char>& buffer);
 
+// Removes the particle frames (NNNNN.vtp) an earlier run left in `dir`, and `dir` itself once it
+// is empty, so that a fresh run's folder holds its own frames only.
+void remove_particle_frames(const std::string& dir);
+
 // An array with its values, for the form below.
 struct VtpArray {
   VtpLayout layout;
@@ -75,7 +79,7 @@ class ParticleVtpWriter {
   void write(const std::string& path, Simulation<T, Backend>& sim) {
     using Sim = Simulation<T, Backend>;
     const ParticleView<T> pv = sim.particles();
-    sim.id_order(by_id_, scratch_ids_);
+    sim.id_order(by_id_, sort_buffers_);
     const std::uint32_t* const by_id = by_id_.data();
     int threads = 1;
     if constexpr (std::is_same_v<Backend, backend::OpenMP>) threads = sim.backend().threads();
@@ -115,7 +119,8 @@ class ParticleVtpWriter {
   }
 
  private:
-  std::vector<std::uint32_t> by_id_, scratch_ids_;
+  std::vector<std::uint32_t> by_id_;
+  RadixBuffers sort_buffers_;
   std::vector<unsigned char> buffer_;
 };
 

@@ -96,6 +96,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
         scene_metrics->header() + "\n";
   }
   make_directories(options.out_dir);
+  if (!options.resume) remove_particle_frames(options.out_dir + "/particles");  // an earlier run's
   if (scene.output.particles) make_directories(options.out_dir + "/particles");
   const std::string map_dir = scene_metrics->map_dir().empty() ? "" : options.out_dir + "/" + scene_metrics->map_dir();
   if (!map_dir.empty()) make_directories(map_dir);

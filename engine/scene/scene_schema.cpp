@@ -363,7 +363,7 @@ std::vector<SectionSpec> build_schema() {
                {
                    {"particles", K::boolean, Q::dimensionless, "true", false,
                     "write particles/NNNNN.vtp (every particle's position, velocity and state; about 50 bytes "
-                    "per particle per frame, 2.5 GB for the 51 frames of the full-resolution tire on snow). false "
+                    "per particle per frame in single precision, 2.5 GB for the 51 frames of the full-resolution tire on snow). false "
                     "writes none: metrics.csv, summary.json, footprints, meshes and `--render` frames are "
                     "unchanged, but `firn render DIR` has nothing to draw"},
                }});
