@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "engine/output/atomic_file.hpp"
+#include "engine/output/frame_files.hpp"
 #include "kernels/backend/openmp.hpp"
 #include "viz/frame_pipeline.hpp"
 #include "viz/scene_render_settings.hpp"
@@ -19,9 +20,7 @@ std::vector<std::pair<int, std::string>> particle_files(const std::string& dir) 
   if (DIR* d = ::opendir(dir.c_str())) {
     while (const dirent* e = ::readdir(d)) {
       const std::string name = e->d_name;
-      if (name.size() == 9 && name.substr(5) == ".vtp" &&
-          std::all_of(name.begin(), name.begin() + 5, [](char c) { return c >= '0' && c <= '9'; }))
-        files.emplace_back(std::stoi(name.substr(0, 5)), dir + "/" + name);
+      if (const int frame = particle_frame_number(name); frame >= 0) files.emplace_back(frame, dir + "/" + name);
     }
     ::closedir(d);
   }

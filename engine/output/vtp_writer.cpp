@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "engine/output/atomic_file.hpp"
+#include "engine/output/frame_files.hpp"
 
 namespace firn {
 
@@ -81,10 +82,7 @@ void remove_particle_frames(const std::string& dir) {
   std::error_code error;
   if (!fs::is_directory(dir, error)) return;
   for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
-    if (name.size() == 9 && name.substr(5) == ".vtp" &&
-        std::all_of(name.begin(), name.begin() + 5, [](char c) { return c >= '0' && c <= '9'; }))
-      fs::remove(entry.path());
+    if (particle_frame_number(entry.path().filename().string()) >= 0) fs::remove(entry.path());
   }
   fs::remove(dir, error);  // only if empty
 }

@@ -809,7 +809,7 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     }
     out.insert("loads", std::move(o));
   }
-  // [metrics], [render]
+  // [contact], [metrics], [output], [render]
   {
     toml::table mo, oo, ro;
     {

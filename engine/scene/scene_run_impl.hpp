@@ -12,6 +12,7 @@
 
 #include "engine/output/atomic_file.hpp"
 #include "engine/output/vtp_writer.hpp"
+#include "engine/output/frame_files.hpp"
 #include "engine/scene/checkpoint.hpp"
 #include "engine/scene/scene_materials.hpp"
 #include "engine/scene/scene_metrics.hpp"
@@ -22,12 +23,6 @@
 
 namespace firn {
 namespace scene_run_detail {
-
-inline std::string frame_name(int frame) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%05d", frame);
-  return buf;
-}
 
 using Clock = std::chrono::steady_clock;
 inline double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
