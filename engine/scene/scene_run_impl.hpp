@@ -11,8 +11,8 @@
 #include <type_traits>
 
 #include "engine/output/atomic_file.hpp"
-#include "engine/output/vtp_writer.hpp"
 #include "engine/output/frame_files.hpp"
+#include "engine/output/vtp_writer.hpp"
 #include "engine/scene/checkpoint.hpp"
 #include "engine/scene/scene_materials.hpp"
 #include "engine/scene/scene_metrics.hpp"
