@@ -34,23 +34,6 @@ TEST(FootprintFigure, PatchStatisticsLeaveOutColumnsBelowFivePercentOfThePeak) {
   EXPECT_DOUBLE_EQ(s.mean, 1e5);
 }
 
-TEST(FootprintFigure, ContactLengthEndsWhereTheLineLoadFallsToHalfItsPlateau) {
-  // The 2-column patch of test_field: its line load drops from plateau to zero between columns, so
-  // the ends sit half a column outside the loaded ones, and the length is 2 columns.
-  EXPECT_NEAR(contact_length(test_field()), 0.02, 1e-12);
-  // A plateau on columns 7..12 with edge columns 6 and 13 at half of it (a patch blurred over one
-  // column each side): the ends are those edge columns, 7 columns apart; the stray 2 kPa column,
-  // below half the plateau, does not count.
-  FootprintField f = test_field();
-  const double line[20] = {0, 0, 0, 0, 0, 0, 0.5, 1, 1, 1, 1, 1, 1, 0.5, 0, 0, 0, 0, 0, 0};
-  for (int k = 0; k < f.nz; ++k)
-    for (int i = 0; i < f.nx; ++i) f.pressure[std::size_t(k * 20 + i)] = k == 5 ? 1e5 * line[i] : 0.0;
-  f.pressure[0] = 2e3;
-  EXPECT_NEAR(contact_length(f), 0.07, 1e-12);
-  std::fill(f.pressure.begin(), f.pressure.end(), 0.0);
-  EXPECT_EQ(contact_length(f), 0.0);
-}
-
 TEST(FootprintFigure, NoContactGivesZeroStatisticsAndStillDraws) {
   FootprintField f = test_field();
   std::fill(f.pressure.begin(), f.pressure.end(), 0.0);

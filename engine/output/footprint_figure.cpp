@@ -85,29 +85,6 @@ FootprintStats footprint_stats(const FootprintField& f) {
   return s;
 }
 
-double contact_length(const FootprintField& f) {
-  std::vector<double> line(std::size_t(f.nx), 0.0);
-  for (int i = 0; i < f.nx; ++i)
-    for (int k = 0; k < f.nz; ++k) line[std::size_t(i)] += f.at(i, k) * f.dx;
-  const double peak = line.empty() ? 0 : *std::max_element(line.begin(), line.end());
-  if (!(peak > 0)) return 0;
-  double sum = 0;
-  int n = 0;
-  for (double l : line)
-    if (l > 0.5 * peak) sum += l, ++n;
-  const double half = 0.5 * sum / n;
-  int first = 0, last = f.nx - 1;
-  while (line[std::size_t(first)] < half) ++first;
-  while (line[std::size_t(last)] < half) --last;
-  // Where the line load crosses `half` between column j (below) and column j + step (at or above).
-  auto crossing = [&](int j, int step) {
-    if (j < 0 || j >= f.nx) return double(j + step);  // the window cuts the patch: its edge column
-    const double below = line[std::size_t(j)], above = line[std::size_t(j + step)];
-    return j + step * (half - below) / (above - below);
-  };
-  return (crossing(last + 1, -1) - crossing(first - 1, 1)) * f.dx;
-}
-
 Image draw_footprint_figure(const FootprintField& f, const FootprintFigureSpec& spec) {
   const FootprintStats stats = footprint_stats(f);
   const double top = spec.pressure_max > 0 ? spec.pressure_max : stats.peak;

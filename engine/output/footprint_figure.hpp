@@ -28,13 +28,6 @@ struct FootprintStats {
 };
 FootprintStats footprint_stats(const FootprintField& field);
 
-// The contact patch's length along x (m): the line load f(x) = sum over z of pressure dx (N/m)
-// falls to half its plateau (its mean over the columns above half its peak) at the patch's two ends,
-// found by linear interpolation between columns. A uniform patch blurred over a few columns by the
-// transfer's kernel keeps its ends at the half level, so the length holds to a fraction of a column
-// where counting columns over a threshold would not. 0 without contact.
-double contact_length(const FootprintField& field);
-
 // What lies above world point (x, z) of the ground: nothing, a tread block, or a groove.
 enum class TreadCover { none, block, groove };
 using TreadCoverAt = std::function<TreadCover(double x, double z)>;

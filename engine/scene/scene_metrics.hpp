@@ -12,8 +12,8 @@
 //     axle_height - radius; the depth of the wheel's bottom below the surface it rolls into),
 //     peak_pressure (the footprint's peak, Pa, when written; a rubber tire: peak_tread_stress, the
 //     tread stress map's peak, engine/output/tread_stress.hpp), contact_length (a rubber tire on a
-//     road, the first plane among [[colliders]]: its contact patch's length along x on the road,
-//     engine/output/footprint_figure.hpp),
+//     road, the first plane among [[colliders]]: the length along x of the tread particles that
+//     touch the road, engine/output/contact_patch.hpp),
 //     displaced (particles farther than metrics.displaced_distance from where the undisturbed
 //     ground would have carried them: x0 - U t e_x; the thesis' Table 5.1) and accumulated
 //     (particles inside the tread's outer radius and width: snow carried in the tread, Figure 5.6),
@@ -28,10 +28,12 @@
 #include <cstddef>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/scene/conveyor.hpp"
 #include "engine/fragments.hpp"
+#include "engine/output/contact_patch.hpp"
 #include "engine/output/footprint_writer.hpp"
 #include "engine/output/tread_stress.hpp"
 #include "engine/scene/scene.hpp"
@@ -85,12 +87,11 @@ class SceneMetrics {
   // Starts the footprint map when the scene writes one.
   void prepare(Simulation<T, Backend>& sim) const {
     if (writes_footprint()) sim.enable_footprint(built_.tire);
-    if (measures_road_contact()) sim.enable_footprint(built_.road);
   }
   // The footprint is the rigid tire's contact pressure; a rubber tire's contact is with particles.
   bool writes_footprint() const { return built_.tire >= 0 && scene_.metrics.footprint && !scene_.tire->rubber; }
   bool writes_tread_stress() const { return built_.tire >= 0 && scene_.metrics.footprint && scene_.tire->rubber; }
-  // A rubber tire on a road plane: the contact patch's length on the road (its footprint map's).
+  // A rubber tire on a road plane: the length of the tread's contact patch on the road.
   bool measures_road_contact() const { return writes_tread_stress() && built_.road >= 0; }
   // The folder of the per-frame map: footprint (a rigid tire's contact pressure), tread_stress (a
   // rubber tire's tread stress), or "" when the scene writes none.
@@ -150,10 +151,9 @@ class SceneMetrics {
       }
       if (writes_tread_stress()) r += number(write_tread_stress(sim, map_stem));
       if (measures_road_contact()) {
-        FootprintField road = footprint_field(sim.footprint(), window);
-        for (double& q : road.pressure) q = -q;  // the force on the road is down, the pressure on it up
-        r += number(contact_length(road));
-        sim.footprint().reset();
+        const std::pair<std::size_t, std::size_t> tread = tread_particles(sim);
+        r += number(contact_patch_length(sim.particles(), tread.first, tread.second, sim.collider(built_.road).collider,
+                                         scene_.config.dx / scene_.per_axis()));
       }
       const SnowCounts n = count_snow(sim, ground_speed);
       r += number(double(n.displaced)) + number(double(n.accumulated));
@@ -185,11 +185,10 @@ class SceneMetrics {
     Collider<double> solid = tire_solid(t);
     for (int d = 0; d < 3; ++d) solid.center[d] = rim.center[d];
     for (int i = 0; i < 9; ++i) solid.rotation[i] = rim.rotation[i];
-    const std::size_t begin = sim.material_range(built_.rubber.first).begin;
-    const std::size_t end = sim.material_range(built_.rubber.first + built_.rubber.second - 1).end;
+    const std::pair<std::size_t, std::size_t> tread = tread_particles(sim);
     const double dx = scene_.config.dx;
     const FootprintField f =
-        tread_stress_field(sim.particles(), begin, end, solid, t.radius - t.tread_depth, 0.5 * t.width + 2 * dx, dx);
+        tread_stress_field(sim.particles(), tread.first, tread.second, solid, t.radius - t.tread_depth, 0.5 * t.width + 2 * dx, dx);
     FootprintFigureSpec spec;
     spec.axle_x = rim.center[0], spec.axle_z = rim.center[2];
     char title[128];
@@ -200,6 +199,12 @@ class SceneMetrics {
     spec.empty = kTreadStressEmpty;
     spec.tread = tread_cover(solid);
     return write_map(stem, f, spec);
+  }
+
+  // The particle range [first, second) of the rubber tire's tread (and sidewalls): its `material`'s.
+  std::pair<std::size_t, std::size_t> tread_particles(Simulation<T, Backend>& sim) const {
+    return {sim.material_range(built_.rubber.first).begin,
+            sim.material_range(built_.rubber.first + built_.rubber.second - 1).end};
   }
 
   SnowCounts count_snow(Simulation<T, Backend>& sim, double ground_speed) const {
