@@ -340,7 +340,10 @@ std::vector<SectionSpec> build_schema() {
                "torque (`NAME_fx` ... `NAME_tz`, on the collider, averaged over the frame); a [tire] adds "
                "`traction`, `vertical_load`, `axle_torque`, `motion_resistance_coefficient`, `slip_ratio`, "
                "`axle_height`, `displaced` and `accumulated` (with a [conveyor] also `sinkage`) and, with "
-               "`footprint`, footprint/NNNNN.csv and .png; a [conveyor] adds `injected` and `removed`; "
+               "`footprint`, footprint/NNNNN.csv and .png (a rubber tire: `peak_tread_stress` and "
+               "tread_stress/NNNNN.csv and .png, and on a road, the first plane among [[colliders]], "
+               "`contact_length`: the length along x of the tread particles that touch it); a [conveyor] adds "
+               "`injected` and `removed`; "
                "`fragments` adds `fragments` and `largest_fragment`.",
                {
                    {"displaced_distance", K::number, Q::length, "0.01", false,
@@ -348,7 +351,7 @@ std::vector<SectionSpec> build_schema() {
                     "as displaced (the thesis' Table 5.1)",
                     0, kInf, true},
                    {"footprint", K::boolean, Q::dimensionless, "true", false,
-                    "write the tire's contact pressure map every frame"},
+                    "write the tire's contact pressure map every frame (a rubber tire: its tread stress map)"},
                    {"fragments", K::boolean, Q::dimensionless, "false", false,
                     "add `fragments` (connected clusters of at least fragment_min_particles particles) and "
                     "`largest_fragment` (its particles) every frame: does the snow break into pieces?"},
