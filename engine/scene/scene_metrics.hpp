@@ -188,7 +188,8 @@ class SceneMetrics {
     const std::pair<std::size_t, std::size_t> tread = tread_particles(sim);
     const double dx = scene_.config.dx;
     const FootprintField f =
-        tread_stress_field(sim.particles(), tread.first, tread.second, solid, t.radius - t.tread_depth, 0.5 * t.width + 2 * dx, dx);
+        tread_stress_field(sim.particles(), tread.first, tread.second, solid, t.radius - t.tread_depth,
+                           0.5 * t.width + 2 * dx, dx);
     FootprintFigureSpec spec;
     spec.axle_x = rim.center[0], spec.axle_z = rim.center[2];
     char title[128];
