@@ -139,10 +139,10 @@ class SceneMetrics {
       const double bottom = tire.collider.center[1] - t.radius;
       r += number(tire.collider.center[1]);
       if (conveyor_) r += number(conveyor_->spec().ground + conveyor_->spec().depth - bottom);
-      // The grid columns within a radius of the axle along x and two cells past the tread's edges.
-      const FootprintWindow window{tire.collider.center[0], tire.collider.center[2], t.radius,
-                                   0.5 * t.width + 2 * scene_.config.dx};
       if (writes_footprint()) {
+        // The grid columns within a radius of the axle along x and two cells past the tread's edges.
+        const FootprintWindow window{tire.collider.center[0], tire.collider.center[2], t.radius,
+                                     0.5 * t.width + 2 * scene_.config.dx};
         char title[128];
         std::snprintf(title, sizeof title, "%s tread, t = %.1f ms, contact pressure averaged over the frame",
                       t.tread.c_str(), 1e3 * sim.time());
