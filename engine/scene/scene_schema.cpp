@@ -259,7 +259,8 @@ std::vector<SectionSpec> build_schema() {
                    {"pressure", K::number, Q::pressure, "0.0", false,
                     "inflation pressure: a follower pressure on the carcass's inner surface over the air cavity, "
                     "carried by Nanson's formula as it deforms (the cavity's volume change does not change it). "
-                    "The sidewalls are not loaded: flat rubber plates would balloon where a tire's curved, "
+                    "The sidewalls are not loaded: measured, flat rubber plates under the pressure bulge out and fold "
+                    "under the axle until the rim pinches the carcass (README, Inflation), where a tire's curved, "
                     "corded sidewalls do not; they join the carcass to the rim, like the radial springs of a "
                     "flexible-ring tire model",
                     0, kInf, false, {}, "rubber"},
