@@ -6,7 +6,8 @@
 // With --render spheres or surface, every output frame is also drawn to frames/NNNNN.png (and
 // video.mp4); surface draws the reconstructed snow surface (viz/surface/frame_surface.hpp).
 // Validates the scene (any fault: one line on standard error, exit status 2, nothing written),
-// runs it with progress on a terminal, and writes the outputs of DESIGN.md section 5.
+// runs it with progress (a redrawn line on a terminal, else a line a minute), and writes the outputs
+// of DESIGN.md section 5.
 // An interrupt writes DIR/checkpoint.firn, and so does --checkpoint-every at the frames it names;
 // --resume continues such a run (engine/scene/checkpoint.hpp) to the end it would have reached.
 // --report writes DIR/report.html (firn report DIR) when the run ends, unless it was interrupted.
@@ -44,28 +45,36 @@ std::string clock_text(double seconds) {
   return buf;
 }
 
-// One line on a terminal, redrawn at most four times a second.
+// Progress on standard error. On a terminal: one line, redrawn at most four times a second.
+// Elsewhere (a log file, a batch job): a line of its own once a minute, so that a short run's log
+// stays as it was and a long one's shows where it is.
 class ProgressLine {
  public:
+  explicit ProgressLine(bool terminal) : terminal_(terminal), last_(terminal ? Clock::time_point{} : start_) {}
+
   void operator()(const RunProgress& p) {
-    const auto now = std::chrono::steady_clock::now();
-    if (std::chrono::duration<double>(now - last_).count() < 0.25 && p.time < p.end_time) return;
+    const auto now = Clock::now();
+    const double since = std::chrono::duration<double>(now - last_).count();
+    if (terminal_ ? since < 0.25 && p.time < p.end_time : since < 60) return;
     last_ = now;
     const double wall = std::chrono::duration<double>(now - start_).count();
     const double eta = p.time > 0 ? wall * (p.end_time - p.time) / p.time : 0;
-    std::fprintf(stderr, "\r  t = %.4g / %.4g s   frame %d/%d   step %ld   %.0f steps/s   ETA %s   ", p.time,
-                 p.end_time, p.frame, p.frames, p.steps, p.step_seconds > 0 ? double(p.steps) / p.step_seconds : 0.0,
-                 clock_text(eta).c_str());
-    drawn_ = true;
+    std::fprintf(stderr, "%s  t = %.4g / %.4g s   frame %d/%d   step %ld   %.0f steps/s   ETA %s%s",
+                 terminal_ ? "\r" : "", p.time, p.end_time, p.frame, p.frames, p.steps,
+                 p.step_seconds > 0 ? double(p.steps) / p.step_seconds : 0.0, clock_text(eta).c_str(),
+                 terminal_ ? "   " : "\n");
+    drawn_ = terminal_;
   }
-  // Ends the line so that later messages start on their own.
+  // Ends the terminal's line so that later messages start on their own.
   void finish() {
     if (drawn_) std::fprintf(stderr, "\n");
     drawn_ = false;
   }
 
  private:
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_{};
+  using Clock = std::chrono::steady_clock;
+  bool terminal_;
+  Clock::time_point start_ = Clock::now(), last_;
   bool drawn_ = false;
 };
 
@@ -167,8 +176,8 @@ void add_run_command(CLI::App& app) {
         meshes(f);
       };
     }
-    ProgressLine progress;
-    if (isatty(STDERR_FILENO)) options.progress = std::ref(progress);
+    ProgressLine progress(isatty(STDERR_FILENO));
+    options.progress = std::ref(progress);
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     RunSummary s;
