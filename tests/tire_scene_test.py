@@ -1,8 +1,9 @@
 """End-to-end checks of the tire experiment (issue 5): scenes/tire_on_snow.toml at preview
 resolution, for each tread and for a loaded axle, and a small `firn sweep` of it; the free-rolling
 loaded wheel of scenes/tire_fresh_snow.toml (issue 16) and its sinkage and motion resistance; the
-deformable rubber tire of scenes/tire_rubber_on_ground.toml (issue 17) landing on the road, and the
-inflated one of scenes/tire_inflated_on_ground.toml standing on its air.
+deformable rubber tire of scenes/tire_rubber_on_ground.toml (issue 17) landing on the road, the
+inflated one of scenes/tire_inflated_on_ground.toml standing on its air, and the inflated tube of
+scenes/inflated_tube_squeeze.toml against the membrane's contact patch.
 
 Usage: python3 tire_scene_test.py FIRN REPO_ROOT SCRATCH_DIR TEST
 """
@@ -18,6 +19,7 @@ SCENE = os.path.join(ROOT, "scenes", "tire_on_snow.toml")
 FRESH_SNOW = os.path.join(ROOT, "scenes", "tire_fresh_snow.toml")
 RUBBER = os.path.join(ROOT, "scenes", "tire_rubber_on_ground.toml")
 INFLATED = os.path.join(ROOT, "scenes", "tire_inflated_on_ground.toml")
+TUBE = os.path.join(ROOT, "scenes", "inflated_tube_squeeze.toml")
 TIRE_COLUMNS = ["traction", "vertical_load", "axle_torque", "motion_resistance_coefficient", "slip_ratio",
                 "axle_height", "sinkage", "peak_pressure", "displaced", "accumulated", "injected", "removed",
                 "tire_fx", "ground_fy"]
@@ -138,5 +140,29 @@ def test_inflated_tire():
     check(float(last["displaced"]) == 0 and float(last["accumulated"]) == 0, "rubber particles counted as snow")
 
 
+def test_inflated_tube():
+    # The membrane estimate (issue 17 item 6): an inflated tube squeezed between plates has
+    # F = p w L, so contact_length follows -road_fy / (p w). The reading steps by a lattice row at
+    # each end (29, 50, 67, 75, 88, 97, 106 mm as the plate comes down), so every frame from three
+    # rows of patch on is checked to lie between 0.85 times the estimate and the estimate plus
+    # 30 mm (measured: 0.93 times, plus 21.4 mm). A pressure on half or twice the area, or a plate
+    # carried by anything but the air, leaves that band. Both plates carry the same force.
+    out = fresh("inflated_tube")
+    r = subprocess.run([FIRN, "run", TUBE, "--out", out], capture_output=True, text=True)
+    check(r.returncode == 0, f"firn run exited {r.returncode}: {r.stderr}")
+    with open(os.path.join(out, "metrics.csv")) as f:
+        rows = list(csv.DictReader(f))
+    p, w = 150e3, 0.020
+    pairs = [(-float(row["road_fy"]) / (p * w), float(row["contact_length"])) for row in rows]
+    pairs = [(e, length) for e, length in pairs if e >= 0.03]
+    check(len(pairs) >= 15, f"only {len(pairs)} frames with F / (p w) of 30 mm or more")
+    check(pairs[-1][0] > 0.09, f"the plate did not squeeze the tube: F / (p w) {pairs[-1][0]} m at the end")
+    for e, length in pairs:
+        check(0.85 * e < length < e + 0.030, f"a patch of {length} m where F / (p w) is {e} m")
+    last = rows[-1]
+    check(math.isclose(-float(last["road_fy"]), float(last["plate_fy"]), rel_tol=0.05),
+          f"road {last['road_fy']} N against plate {last['plate_fy']} N")
+
+
 {"treads": test_treads, "loaded_axle": test_loaded_axle, "free_wheel": test_free_wheel, "sweep": test_sweep,
- "rubber_tire": test_rubber_tire, "inflated_tire": test_inflated_tire}[TEST]()
+ "rubber_tire": test_rubber_tire, "inflated_tire": test_inflated_tire, "inflated_tube": test_inflated_tube}[TEST]()

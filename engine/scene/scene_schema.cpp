@@ -254,8 +254,10 @@ std::vector<SectionSpec> build_schema() {
                     "radius with a `pressure`, else the carcass's inner radius: the carcass sits on the rim)",
                     0, kInf, true, {}, "rubber"},
                    {"sidewall", K::number, Q::length, "\"8 mm\"", false,
-                    "thickness of the two sidewalls that close an air cavity, from the rim to the carcass", 0, kInf,
-                    true, {}, "rubber"},
+                    "thickness of the two sidewalls that close an air cavity, from the rim to the carcass; 0: "
+                    "none, an open tube of tread and carcass that nothing joins to the rim (e.g. squeezed between "
+                    "plates: scenes/inflated_tube_squeeze.toml)",
+                    0, kInf, false, {}, "rubber"},
                    {"pressure", K::number, Q::pressure, "0.0", false,
                     "inflation pressure: a follower pressure on the carcass's inner surface over the air cavity, "
                     "carried by Nanson's formula as it deforms (the cavity's volume change does not change it). "
