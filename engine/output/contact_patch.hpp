@@ -6,7 +6,11 @@
 // runs along x from the first touching particle's cube to the last one's, so its length is their
 // extent along x plus h. It is known to a lattice row: the tread's lowest particles form a staircase
 // of the lattice's rows, and the reading steps by one row's extent at each end (8-16 mm for 2.67 mm
-// particles on a 0.2 m tire deflected by 4-7 mm; README, "Inflation").
+// particles on a 0.2 m tire deflected by 4-7 mm; README, "Inflation"). And it depends on where the
+// grid contact holds the body: through the nodes a cell inside the plane, so a lightly pressed
+// body can sit above h / 2 and read nothing (an inflated band 20 mm wide, pressed with 340 N at
+// dx = 8 mm with 2.67 mm particles, sat 1.6-1.9 mm up and read 0), and a heavily pressed one sinks
+// below the plane (an inflated tire's bottom row, 1.1-1.8 mm).
 //
 // Why not the road's load: the grid contact carries a particle's load through the nodes a cell
 // inside the road, with a B-spline weight that falls with the particle's height above it, so the
