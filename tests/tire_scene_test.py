@@ -39,6 +39,18 @@ def preview_run(name, *sets, scene=SCENE, end="10 ms"):
     return out, rows
 
 
+def full_run(name, scene, *sets):
+    # A scene at its own resolution (the inflated scenes have no preview), to its end or as `sets` say.
+    out = fresh(name)
+    args = [FIRN, "run", scene, "--out", out]
+    for s in sets:
+        args += ["--set", s]
+    r = subprocess.run(args, capture_output=True, text=True)
+    check(r.returncode == 0, f"firn run exited {r.returncode}: {r.stderr}")
+    with open(os.path.join(out, "metrics.csv")) as f:
+        return list(csv.DictReader(f))
+
+
 def test_treads():
     for tread in ["angled_footstep", "bowtie", "six_rib"]:
         out, rows = preview_run("tread_" + tread, "tire.tread=" + tread)
@@ -127,12 +139,7 @@ def test_inflated_tire():
     # cell cannot hold a carcass in tension), 10 ms into its 20 ms inflation: the pressure has
     # done work expanding it (load_work), its air cavity's rubber is counted as tire, not snow, and
     # the road's contact patch is measured (contact_length; 0 before the tire touches it).
-    out = fresh("inflated")
-    r = subprocess.run([FIRN, "run", INFLATED, "--out", out, "--set", "simulation.end_time=10 ms"],
-                       capture_output=True, text=True)
-    check(r.returncode == 0, f"firn run exited {r.returncode}: {r.stderr}")
-    with open(os.path.join(out, "metrics.csv")) as f:
-        rows = list(csv.DictReader(f))
+    rows = full_run("inflated", INFLATED, "simulation.end_time=10 ms")
     last = rows[-1]
     check(float(last["load_work"]) > 0, f"the pressure did no work: load_work {last['load_work']}")
     check(math.isfinite(float(last["contact_length"])) and float(last["contact_length"]) >= 0,
@@ -147,11 +154,7 @@ def test_inflated_tube():
     # rows of patch on is checked to lie between 0.85 times the estimate and the estimate plus
     # 30 mm (measured: 0.93 times, plus 21.4 mm). A pressure on half or twice the area, or a plate
     # carried by anything but the air, leaves that band. Both plates carry the same force.
-    out = fresh("inflated_tube")
-    r = subprocess.run([FIRN, "run", TUBE, "--out", out], capture_output=True, text=True)
-    check(r.returncode == 0, f"firn run exited {r.returncode}: {r.stderr}")
-    with open(os.path.join(out, "metrics.csv")) as f:
-        rows = list(csv.DictReader(f))
+    rows = full_run("inflated_tube", TUBE)
     p, w = 150e3, 0.020
     pairs = [(-float(row["road_fy"]) / (p * w), float(row["contact_length"])) for row in rows]
     pairs = [(e, length) for e, length in pairs if e >= 0.03]
