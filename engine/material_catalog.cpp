@@ -18,6 +18,14 @@ const std::vector<MaterialModelSpec>& material_model_specs() {
   static const std::vector<MaterialModelSpec> specs = {
       {"neo_hookean", "compressible neo-Hookean, tau = mu (B - I) + lambda ln(J) I", true, {}},
       {"fixed_corotated", "fixed-corotated, tau = 2 mu (F - R) F^T + lambda (J - 1) J I", true, {}},
+      {"bimodular",
+       "bimodular Hencky elasticity, stiff in tension and soft in compression like cords in rubber (Bert 1977): "
+       "tau_i = 2 mu s(e_i) e_i + lambda s(ln J) ln J along the principal log stretches e_i, s(x) = 1 for x > 0, "
+       "else compression_ratio",
+       true,
+       {{"compression_ratio", Quantity::dimensionless, std::nullopt, 0, 1,
+         "the moduli in compression over those in tension (0: tension only; e.g. 0.05 for rubber between cords "
+         "20 times stiffer)"}}},
       {"mooney_rivlin",
        "compressible Mooney-Rivlin, W = K/2 (1/2 (J^2 - 1) - ln J) + G1/2 (I1bar - 3) + G2/2 (I2bar - 3) "
        "(thesis Eq. 4.1-4.4)",

@@ -15,6 +15,7 @@
 
 #include "engine/elastic_moduli.hpp"
 #include "engine/material_catalog.hpp"
+#include "kernels/constitutive/bimodular.hpp"
 #include "kernels/constitutive/fixed_corotated.hpp"
 #include "kernels/constitutive/hyperelastic_plastic.hpp"
 #include "kernels/constitutive/mooney_rivlin.hpp"
@@ -27,7 +28,7 @@ namespace firn {
 template <class T>
 using MaterialModel =
     std::variant<NeoHookean<T>, FixedCorotated<T>, MooneyRivlin<T>, HyperelasticPlastic<T>, SnowStomakhin<T>,
-                 SnowCamClay<T>>;
+                 SnowCamClay<T>, Bimodular<T>>;
 
 struct MaterialInfo {
   std::string name;
@@ -87,6 +88,7 @@ MaterialModel<T> make_material_model(const MaterialInfo& info) {
   const auto param = [&](const char* key) { return T(material_param(info, key)); };
   if (info.model == NeoHookean<T>::kName) return NeoHookean<T>{T(m.mu()), T(m.lambda())};
   if (info.model == FixedCorotated<T>::kName) return FixedCorotated<T>{T(m.mu()), T(m.lambda())};
+  if (info.model == Bimodular<T>::kName) return Bimodular<T>{T(m.mu()), T(m.lambda()), param("compression_ratio")};
   if (info.model == MooneyRivlin<T>::kName || info.model == HyperelasticPlastic<T>::kName) {
     // G from the elastic moduli is the small-strain shear modulus G1 + G2.
     const double G2 = material_param(info, "G2");

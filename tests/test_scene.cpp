@@ -158,6 +158,73 @@ TEST(SceneBuilder, AngularVelocitySpinsAboutTheCentreOfMass) {
   EXPECT_NEAR(L / I, 10, 1e-9);
 }
 
+// A rubber tire's tread, carcass band and sidewalls go to their own materials' tables, each part
+// where the tire's geometry puts it; a part of another part's table joins that table.
+TEST(SceneBuilder, RubberTirePartsTakeTheirMaterials) {
+  const std::string text = R"(
+[simulation]
+domain_min = ["-220 mm", "-20 mm", "-80 mm"]
+domain_max = ["220 mm", "420 mm", "80 mm"]
+dx = "8 mm"
+particles_per_cell = 8
+end_time = "1 ms"
+[materials.tread]
+preset = "thesis_tire_rubber"
+[materials.cord]
+model = "neo_hookean"
+density = 1100
+E = "200 MPa"
+nu = 0.3
+[materials.side]
+model = "bimodular"
+density = 1100
+E = "200 MPa"
+nu = 0.0
+compression_ratio = 0.05
+[tire]
+body = "rubber"
+material = "tread"
+carcass_material = "cord"
+sidewall_material = "side"
+carcass = "8 mm"
+tread = "slick"
+pressure = "200 kPa"
+center = ["0 mm", "202 mm", "0 mm"]
+speed = 0.0
+)";
+  const double radius = 0.2, tread_base = radius - 0.012, carcass_inner = tread_base - 0.008;
+  for (const bool own_sidewall : {true, false}) {
+    SceneOptions o;
+    if (!own_sidewall) o.overrides = {"tire.sidewall_material=cord"};
+    const SceneSpec s = load_scene_text(text, "tire_parts.toml", o).spec;
+    Simulation<double, backend::Serial> sim(s.config);
+    const BuiltScene built = build_scene(s, sim);
+    sim.prepare();
+    ASSERT_EQ(sim.material_count(), 3u);
+    ASSERT_EQ(built.rubber.second, 1);
+    ASSERT_EQ(built.carcass.second, 1);
+    ASSERT_EQ(built.sidewall.second, own_sidewall ? 1 : 0);
+    const ParticleView<double> pv = sim.particles();
+    // Each part's particles lie where its radius about the axle says: the tread above the carcass,
+    // the sidewalls below it, the carcass band between (with the sidewalls when they share its table).
+    const auto radii_within = [&](std::pair<int, int> part, double lo, double hi) {
+      const ParticleRange r = sim.material_range(part.first);
+      for (std::size_t p = r.begin; p < r.end; ++p) {
+        const double radial = std::hypot(pv.x[0][p], pv.x[1][p] - 0.202);
+        EXPECT_TRUE(radial >= lo && radial < hi) << "radius " << radial << " outside [" << lo << ", " << hi << ")";
+      }
+      return r.end - r.begin;
+    };
+    const std::size_t tread = radii_within(built.rubber, tread_base, radius);
+    const std::size_t carcass = radii_within(built.carcass, own_sidewall ? carcass_inner : 0.0, tread_base);
+    const std::size_t sidewall = own_sidewall ? radii_within(built.sidewall, 0.0, carcass_inner) : 0;
+    EXPECT_GT(tread, 0u);
+    EXPECT_GT(carcass, 0u);
+    EXPECT_EQ(sidewall > 0, own_sidewall);
+    EXPECT_EQ(tread + carcass + sidewall, fill_rubber_tire(s).positions.size());
+  }
+}
+
 // A load spreads its total force over the particles in its region: sum m a = F, ramped.
 TEST(Loads, TotalForceIsSharedByMassAndRamped) {
   SimulationConfig c;

@@ -64,6 +64,7 @@ struct TireSpec {
   bool rubber = false;      // body = "rubber": particles of `material` on a rigid rim
   int material = -1;        // rubber: its [materials.NAME] table (the tread's)
   int carcass_material = -1;  // rubber: the carcass band's table (default: material's)
+  int sidewall_material = -1;  // rubber: the sidewalls' table (default: material's)
   double carcass_radius = 0;  // rubber: the carcass's inner radius, radius - tread_depth - carcass
   double rim_radius = 0;      // rubber: carcass_radius, or below it with an air cavity
   double sidewall = 0;        // rubber with a cavity: thickness of the two sidewalls closing it

@@ -135,12 +135,14 @@ RubberTireFill fill_rubber_tire(const SceneSpec& scene) {
   const std::size_t n = out.positions.size();
   const double w = solid.angular_velocity[2];
   out.velocities.resize(n);
-  out.carcass.resize(n);
+  out.part.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Point& p = out.positions[i];
     out.velocities[i] = {-w * (p[1] - t.center[1]), w * (p[0] - t.center[0]), 0};
     const double r = radius_at(p);
-    out.carcass[i] = r >= t.carcass_radius && r < t.radius - t.tread_depth;
+    out.part[i] = r < t.carcass_radius                   ? TirePart::sidewall
+                  : r < t.radius - t.tread_depth ? TirePart::carcass
+                                                 : TirePart::tread;
   }
   if (!(t.pressure > 0)) {
     out.areas.assign(n, Point{0, 0, 0});

@@ -25,9 +25,10 @@ void fill_body(const SceneSpec& scene, std::size_t index, std::vector<Point>& po
 // The lattice sites of a rubber tire (inside its tread's solid, outside its rim; with an air cavity,
 // the tread and carcass above it and the two sidewalls beside it) with their velocities, turning
 // with the tire at its starting rate.
+enum class TirePart : char { tread, carcass, sidewall };
 struct RubberTireFill {
   std::vector<Point> positions, velocities;
-  std::vector<char> carcass;  // 1: the carcass band below the tread, 0: tread or sidewall
+  std::vector<TirePart> part;
   std::vector<Point> areas;   // rest area vector N dA on the carcass's inner surface (inflated), else 0
 };
 RubberTireFill fill_rubber_tire(const SceneSpec& scene);
@@ -54,8 +55,9 @@ std::vector<Collider<double>> scene_colliders_at(const SceneSpec& scene, double 
 struct BuiltScene {
   int tire = -1;
   int ground = -1;
-  std::pair<int, int> rubber{0, 0};   // a rubber tire's tread (and sidewalls): first engine material, count
-  std::pair<int, int> carcass{0, 0};  // its carcass band when of another material (count 0: none)
+  std::pair<int, int> rubber{0, 0};    // a rubber tire's tread (and parts of its material): first engine material, count
+  std::pair<int, int> carcass{0, 0};   // its carcass band when of another material (count 0: none)
+  std::pair<int, int> sidewall{0, 0};  // its sidewalls when of a material of neither (count 0: none)
   int road = -1;  // a rubber tire's road: the first plane among [[colliders]] (-1: none)
 };
 
@@ -96,20 +98,21 @@ BuiltScene build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
       for (const std::size_t k : add_table_particles(sim, materials, table, x, x, v, particle_volume(scene)))
         areas.push_back(a[k]);
     };
-    if (t.carcass_material == t.material) {
-      add_part(t.material, [](std::size_t) { return true; });
-    } else {  // tread and sidewalls, then the carcass band
-      add_part(t.material, [&](std::size_t i) { return !fill.carcass[i]; });
-      add_part(t.carcass_material, [&](std::size_t i) { return fill.carcass[i] != 0; });
-    }
+    // The parts' tables, indexed by TirePart; each table's particles are added at once, in this order.
+    const int table_of[3] = {t.material, t.carcass_material, t.sidewall_material};
+    const auto range = [&](int table) { return std::pair<int, int>{materials.first(table), materials.count(table)}; };
+    for (int part = 0; part < 3; ++part)
+      if (std::find(table_of, table_of + part, table_of[part]) == table_of + part)
+        add_part(table_of[part], [&](std::size_t i) { return table_of[int(fill.part[i])] == table_of[part]; });
     if (t.pressure > 0) {
       sim.add_pressure_surface(sim.particle_count() - areas.size(), areas);
       sim.set_pressure(t.pressure, t.pressure_ramp);
     }
-    built.rubber = {materials.first(t.material), materials.count(t.material)};
-    if (t.carcass_material != t.material)
-      built.carcass = {materials.first(t.carcass_material), materials.count(t.carcass_material)};
-    for (const std::pair<int, int>& part : {built.rubber, built.carcass})
+    built.rubber = range(t.material);
+    if (t.carcass_material != t.material) built.carcass = range(t.carcass_material);
+    if (t.sidewall_material != t.material && t.sidewall_material != t.carcass_material)
+      built.sidewall = range(t.sidewall_material);
+    for (const std::pair<int, int>& part : {built.rubber, built.carcass, built.sidewall})
       for (int m = 0; m < part.second; ++m) sim.set_contact_group(part.first + m, 1, t.friction);
   }
   for (const ColliderSpec& c : scene.colliders) {

@@ -202,7 +202,7 @@ class SceneMetrics {
     return write_map(stem, f, spec);
   }
 
-  // The particle range [first, second) of the rubber tire's tread (and sidewalls): its `material`'s.
+  // The particle range [first, second) of the rubber tire's tread (and the parts of its `material`).
   std::pair<std::size_t, std::size_t> tread_particles(Simulation<T, Backend>& sim) const {
     return {sim.material_range(built_.rubber.first).begin,
             sim.material_range(built_.rubber.first + built_.rubber.second - 1).end};
@@ -216,7 +216,7 @@ class SceneMetrics {
     const T shift = T(ground_speed * sim.time());
     const T limit2 = T(scene_.metrics.displaced_distance * scene_.metrics.displaced_distance);
     ParticleRanges tire;
-    for (const std::pair<int, int>& t : {built_.rubber, built_.carcass})
+    for (const std::pair<int, int>& t : {built_.rubber, built_.carcass, built_.sidewall})
       if (t.second > 0) {
         tire.begin[tire.count] = sim.material_range(t.first).begin;
         tire.end[tire.count++] = sim.material_range(t.first + t.second - 1).end;

@@ -717,6 +717,8 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     if (t.rubber) {
       t.material = material_index(r, s.materials);
       t.carcass_material = r.text("carcass_material") ? material_index(r, s.materials, "carcass_material") : t.material;
+      t.sidewall_material =
+          r.text("sidewall_material") ? material_index(r, s.materials, "sidewall_material") : t.material;
       t.carcass_radius = t.radius - t.tread_depth - r.number("carcass");
       if (!(t.carcass_radius > 0)) r.fail("carcass", "leaves no rim: tread_depth + carcass must be less than the radius");
       t.pressure = r.number("pressure");

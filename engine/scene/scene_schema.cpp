@@ -242,8 +242,12 @@ std::vector<SectionSpec> build_schema() {
                     -kInf, kInf, false, {}, "rubber"},
                    {"carcass_material", K::text, Q::dimensionless, "", false,
                     "NAME of the [materials.NAME] table of the carcass band (default: `material`), e.g. a stiffer "
-                    "isotropic stand-in for a belted, cord-reinforced carcass; the tread and the sidewalls are of "
-                    "`material`",
+                    "isotropic stand-in for a belted, cord-reinforced carcass",
+                    -kInf, kInf, false, {}, "rubber"},
+                   {"sidewall_material", K::text, Q::dimensionless, "", false,
+                    "NAME of the [materials.NAME] table of the two sidewalls (default: `material`), e.g. a "
+                    "`bimodular` material, stiff in tension and soft in compression, that holds the rim up from "
+                    "above and goes slack under the axle, as corded sidewalls do",
                     -kInf, kInf, false, {}, "rubber"},
                    {"carcass", K::number, Q::length, "\"20 mm\"", false,
                     "thickness of the rubber carcass below the tread (down to the rim without an air cavity)", 0,
