@@ -28,7 +28,7 @@ void fill_body(const SceneSpec& scene, std::size_t index, std::vector<Point>& po
 enum class TirePart : char { tread, carcass, sidewall };
 struct RubberTireFill {
   std::vector<Point> positions, velocities;
-  std::vector<TirePart> part;
+  std::vector<TirePart> part;  // which part of the tire each site is
   std::vector<Point> areas;   // rest area vector N dA on the carcass's inner surface (inflated), else 0
 };
 RubberTireFill fill_rubber_tire(const SceneSpec& scene);
@@ -55,7 +55,7 @@ std::vector<Collider<double>> scene_colliders_at(const SceneSpec& scene, double 
 struct BuiltScene {
   int tire = -1;
   int ground = -1;
-  std::pair<int, int> rubber{0, 0};    // a rubber tire's tread (and parts of its material): first engine material, count
+  std::pair<int, int> rubber{0, 0};    // a rubber tire's tread (with parts of its material): first material, count
   std::pair<int, int> carcass{0, 0};   // its carcass band when of another material (count 0: none)
   std::pair<int, int> sidewall{0, 0};  // its sidewalls when of a material of neither (count 0: none)
   int road = -1;  // a rubber tire's road: the first plane among [[colliders]] (-1: none)
