@@ -145,6 +145,13 @@ def test_inflated_tire():
     check(math.isfinite(float(last["contact_length"])) and float(last["contact_length"]) >= 0,
           f"contact_length {last['contact_length']}")
     check(float(last["displaced"]) == 0 and float(last["accumulated"]) == 0, "rubber particles counted as snow")
+    # Sidewalls of a material of their own (a bimodular one, as README's Inflation measures) are
+    # tire too: none of them counted as snow inside the tire (accumulated).
+    rows = full_run("inflated_sidewalls", INFLATED, "simulation.end_time=5 ms", "materials.side.model=bimodular",
+                    "materials.side.density=1100", "materials.side.E=200 MPa", "materials.side.nu=0",
+                    "materials.side.compression_ratio=0.05", "tire.sidewall_material=side")
+    check(all(float(r["displaced"]) == 0 and float(r["accumulated"]) == 0 for r in rows),
+          "sidewall particles counted as snow")
 
 
 def test_inflated_tube():
