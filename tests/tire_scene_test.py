@@ -25,9 +25,11 @@ TIRE_COLUMNS = ["traction", "vertical_load", "axle_torque", "motion_resistance_c
                 "tire_fx", "ground_fy"]
 
 
-def preview_run(name, *sets, scene=SCENE, end="10 ms"):
+def run_scene(name, scene, sets, options=()):
+    # `firn run scene options --set ...` into a fresh folder: it must end ok; returns the folder and
+    # metrics.csv's rows.
     out = fresh(name)
-    args = [FIRN, "run", scene, "--preview", "--out", out, "--set", "simulation.end_time=" + end]
+    args = [FIRN, "run", scene, *options, "--out", out]
     for s in sets:
         args += ["--set", s]
     r = subprocess.run(args, capture_output=True, text=True)
@@ -39,16 +41,13 @@ def preview_run(name, *sets, scene=SCENE, end="10 ms"):
     return out, rows
 
 
+def preview_run(name, *sets, scene=SCENE, end="10 ms"):
+    return run_scene(name, scene, ("simulation.end_time=" + end,) + sets, ["--preview"])
+
+
 def full_run(name, scene, *sets):
     # A scene at its own resolution (the inflated scenes have no preview), to its end or as `sets` say.
-    out = fresh(name)
-    args = [FIRN, "run", scene, "--out", out]
-    for s in sets:
-        args += ["--set", s]
-    r = subprocess.run(args, capture_output=True, text=True)
-    check(r.returncode == 0, f"firn run exited {r.returncode}: {r.stderr}")
-    with open(os.path.join(out, "metrics.csv")) as f:
-        return list(csv.DictReader(f))
+    return run_scene(name, scene, sets)[1]
 
 
 def test_treads():
