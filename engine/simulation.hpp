@@ -55,6 +55,7 @@
 #include "kernels/step/constitutive_update.hpp"
 #include "kernels/step/elastic_energy.hpp"
 #include "kernels/step/contact_normals.hpp"
+#include "kernels/step/contact_pool_sums.hpp"
 #include "kernels/step/contact_update.hpp"
 #include "kernels/step/g2p_gather.hpp"
 #include "kernels/step/grid_update_slots.hpp"
@@ -140,6 +141,7 @@ class Simulation {
     grid_.configure(g, channels);
     contact_.grid_b.configure(g, channels);
     contact_.normals.configure(g, kContactNormalChannels);
+    pool_moments_.configure(g, kContactNormalChannels);
   }
 
   int add_material(const MaterialInfo& info) {
@@ -241,6 +243,8 @@ class Simulation {
     if (c.motion == ColliderBody::Motion::loaded_axle && !(c.mass > 0))
       throw std::invalid_argument("a loaded axle needs a positive mass");
     if (c.free_spin && !(c.inertia > 0)) throw std::invalid_argument("a free spin needs a positive moment of inertia");
+    if (c.collider.contact == ColliderContact::pooled && pooled_collider() >= 0)
+      throw std::invalid_argument("at most one collider with contact = pooled");
     colliders_.push_back(c);
     return int(colliders_.size()) - 1;
   }
@@ -332,6 +336,8 @@ class Simulation {
         "particles.min_mass", pv.n, std::numeric_limits<T>::max(),
         [=] FIRN_HD_LAMBDA(std::size_t p, T& acc) { acc = std::min(acc, pv.mass[p]); }, Min{});
     min_node_mass_ = T(kEmptyNodeMassFraction * (pv.n ? double(lightest) : std::numeric_limits<double>::max()));
+    if (pooled_collider() >= 0 && contact_active())
+      throw std::invalid_argument("a collider with contact = pooled cannot be used with two contact groups");
     prepared_ = true;
   }
 
@@ -531,6 +537,13 @@ class Simulation {
     return r;
   }
 
+  // The collider with contact = pooled, or -1.
+  int pooled_collider() const {
+    for (std::size_t c = 0; c < colliders_.size(); ++c)
+      if (colliders_[c].collider.contact == ColliderContact::pooled) return int(c);
+    return -1;
+  }
+
   int contact_group(std::size_t m) const { return m < contact_.group.size() ? contact_.group[m] : 0; }
 
   // Whether both contact groups have particles (valid after prepare()).
@@ -633,9 +646,14 @@ class Simulation {
       backend_.scatter_blocks("contact.normals", binning_.colouring(),
                               ContactNormalScatter<T, ShapeT>{pv, contact_.normals.view(), binning_.view(), g, group_b});
     }
+    const int pooled = pooled_collider();
+    if (pooled >= 0)  // with one group, the normals' first channels are the mass moments pool_node reads
+      backend_.scatter_blocks("contact.pool_moments", binning_.colouring(),
+                              ContactNormalScatter<T, ShapeT>{pv, pool_moments_.view(), bins, g, ParticleRanges{}});
     const MirrorPlanes<T> mirror = mirror_planes<T>(config_.walls.data(), g.nodes);
     if (mirror.any()) fold_mirror_images<kTransfer>(mirror, dt, contact);
     pose_colliders(dt, contact);
+    if (pooled >= 0) solve_contact_pool<kTransfer>(pooled);
     backend_.parallel_for("grid_update", grid_.active_count(), GridUpdateSlots<T, kTransfer>{grid_.slots(), &grid_params_[0]});
     if (contact) {
       backend_.parallel_for("grid_update", grid_.active_count(),
@@ -719,6 +737,7 @@ class Simulation {
       contact_.grid_b.activate(binning_.occupied_blocks(), backend_);
       contact_.normals.activate(binning_.occupied_blocks(), backend_);
     }
+    if (pooled_collider() >= 0) pool_moments_.activate(binning_.occupied_blocks(), backend_);
   }
 
   // The constitutive update, one launch per material range (kernels/step/constitutive_update.hpp);
@@ -791,6 +810,8 @@ class Simulation {
       work_.resize(slots * kWorkKinds);
       up.work = work_.data();
     }
+    up.moments = pool_moments_.slots();
+    for (int c = 0; c < kMaxColliders; ++c) up.pool_lambda[c] = up.pool_keep[c] = T(0);
     up.footprint_collider = footprint_collider_;
     up.footprint = nullptr;
     if (footprint_collider_ >= 0) {
@@ -812,6 +833,42 @@ class Simulation {
       b.footprint = contact_.footprint_b.data();
     }
   }
+
+  // The pooled collider's lambda and friction (kernels/pooled_contact.hpp). lambda: Newton's method on
+  // the convex, piecewise linear S(lambda) from lambda_0 = -(sum m v_n) / (sum m), where S >= 0;
+  // every iterate stays at or above the root, so stopping early keeps the contact from approaching
+  // on average. S' = 0 means every inside node is held by its guard alone, whatever lambda below
+  // it: lambda = 0. Then Coulomb's bound on the whole contact: the surface row keeps the share
+  // 1 - capacity / demand of its slip, or none (it sticks).
+  template <Transfer kTransfer>
+  void solve_contact_pool(int c) {
+    GridUpdateParams<T>& up = grid_params_[0];
+    const auto sums = [&](double lambda) {
+      return backend_.parallel_reduce("contact.pool", grid_.active_count(), DoubleSums<kPoolSums>{},
+                                      ContactPoolSums<T, kTransfer>{grid_.slots(), &up, c, T(lambda)}, Sum{});
+    };
+    DoubleSums<kPoolSums> s = sums(0.0);
+    double lambda = 0;
+    const double mass = s.v[0];
+    if (mass > 0 && s.v[1] < 0) {  // the contact approaches on average
+      lambda = -s.v[1] / mass;
+      for (int i = 0;; ++i) {
+        s = sums(lambda);
+        if (!(s.v[3] > 0)) {
+          lambda = 0;
+          break;
+        }
+        if (s.v[2] <= kPoolTolerance * lambda * mass || i == kPoolNewtonSteps) break;
+        lambda = std::max(0.0, lambda - s.v[2] / s.v[3]);
+      }
+    }
+    up.pool_lambda[c] = T(lambda);
+    const double capacity = s.v[4], demand = s.v[5];
+    up.pool_keep[c] = T(demand > capacity ? 1 - capacity / demand : 0);
+  }
+  // Newton's steps are few: the guard holds a few nodes at most, and each step passes a breakpoint.
+  static constexpr int kPoolNewtonSteps = 8;
+  static constexpr double kPoolTolerance = 1e-6;  // of lambda, on the mean normal velocity
 
   // Sums the per-block collider reactions and footprint columns of the last grid update (both
   // contact groups' with `contact`) on the backend (kernels/step/collider_sums.hpp).
@@ -958,6 +1015,7 @@ class Simulation {
     SparseGrid<T> grid_b, normals;
     AlignedVector<T> reactions_b, work_b, footprint_b;
   } contact_;
+  SparseGrid<T> pool_moments_;  // the pooled collider's mass moments (pool_node), allocated only with one
   ParticleBinning binning_;
   T max_speed_ = T(0);
   // A node with less than this fraction of the lightest particle's mass counts as empty: its

@@ -38,6 +38,10 @@ namespace firn {
 
 enum class ColliderShape : std::uint8_t { plane, box, cylinder, tire };
 
+// How a collider's contact conditions are decided: node by node (`apply`, below) or pooled over
+// the contact of one stiff body (kernels/pooled_contact.hpp).
+enum class ColliderContact : std::uint8_t { nodes, pooled };
+
 // The surface skin in cells (see above): 1e-3 dx covers float rounding of coordinates up to about
 // 8000 cells from the grid's origin.
 constexpr double kColliderSkin = 1e-3;
@@ -47,6 +51,7 @@ struct Collider {
   ColliderShape shape = ColliderShape::plane;
   WallType boundary = WallType::sticky;
   Friction<T> friction{};
+  ColliderContact contact = ColliderContact::nodes;
   T center[3] = {T(0), T(0), T(0)};                                  // body origin c
   T rotation[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};  // R, row-major
   T velocity[3] = {T(0), T(0), T(0)};                                // of the origin
@@ -152,6 +157,7 @@ Collider<T> collider_cast(const Collider<U>& c) {
   o.shape = c.shape;
   o.boundary = c.boundary;
   o.friction = Friction<T>{c.friction.law, T(c.friction.mu)};
+  o.contact = c.contact;
   for (int i = 0; i < 3; ++i) {
     o.center[i] = T(c.center[i]);
     o.velocity[i] = T(c.velocity[i]);

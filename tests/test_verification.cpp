@@ -34,7 +34,8 @@ TEST(Verification, OnRequestProblemsAreNotDefault) {
 
 // The rolling cylinder makes the same contact decisions in float as in double (issue 19: in float
 // no ground node stuck, because the node row on the ground plane fell inside it by rounding, and
-// the cylinder slid with a 12% error). Within 2% in both, and the two within 0.2% of each other.
+// the cylinder slid with a 12% error). Within 2% in both, and the two within 0.2% of each other
+// (on the pooled ground, measured 2026-11-29: 1.31% in both).
 TEST(Verification, RollingCylinderRollsInFloatAsInDouble) {
   VerificationMethod single, double_;
   single.precision = Precision::single;

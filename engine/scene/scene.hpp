@@ -39,6 +39,7 @@ struct ColliderSpec {
   Point angular_velocity = {0, 0, 0};  // about the shape's centre (plane: its point)
   WallType boundary = WallType::sticky;
   Friction<double> friction{};
+  ColliderContact contact = ColliderContact::nodes;
 };
 
 // The tire of the thesis' experiment (issue 5): a rigid tire collider with a tread pattern on an

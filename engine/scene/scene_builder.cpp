@@ -27,6 +27,7 @@ ColliderBody collider_body(const ColliderSpec& c) {
   Collider<double> k;
   k.boundary = c.boundary;
   k.friction = c.friction;
+  k.contact = c.contact;
   for (int d = 0; d < 3; ++d) {
     k.velocity[d] = c.velocity[d];
     k.angular_velocity[d] = c.angular_velocity[d];

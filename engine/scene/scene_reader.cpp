@@ -689,6 +689,14 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
       c.angular_velocity = r.vec3("angular_velocity");
       c.boundary = WallType(r.choice_index("boundary") + 1);
       c.friction = read_friction(r);
+      c.contact = ColliderContact(r.choice_index("contact"));
+      if (c.contact == ColliderContact::pooled) {
+        if (c.boundary != WallType::separate) r.fail("contact", "pooled needs boundary = \"separate\"");
+        for (const ColliderSpec& earlier : s.colliders)
+          if (earlier.contact == ColliderContact::pooled) r.fail("contact", "only one collider may be pooled");
+        for (const int group : s.contact_groups)
+          if (group != 0) r.fail("contact", "pooled cannot be used with two contact groups");
+      }
       r.finish();
       s.colliders.push_back(c);
       o.push_back(std::move(co));

@@ -211,6 +211,14 @@ std::vector<SectionSpec> build_schema() {
                     -kInf, kInf, false, kFrictionLaws},
                    {"friction", K::number, Q::dimensionless, "0.0", false,
                     "friction coefficient (velocity_dependent: mu0, the value at 1 mm/s)", 0, kInf},
+                   {"contact", K::choice, Q::dimensionless, "\"nodes\"", false,
+                    "nodes (every grid node inside takes the boundary condition on its own) or pooled (boundary "
+                    "separate only): the contact of one stiff body taken as a whole, every node inside given the "
+                    "same normal velocity change, no node's material let across the surface, friction on the row "
+                    "of nodes just outside with Coulomb's bound on the whole contact; the rolling and sliding problems "
+                    "of `firn verify` converge with it (docs/contact.md). Not for snow, nor for several bodies "
+                    "touching one collider; not with two contact groups",
+                    -kInf, kInf, false, {"nodes", "pooled"}},
                }});
   std::vector<std::string> treads;
   for (const TreadPattern& t : tread_patterns()) treads.push_back(t.name);

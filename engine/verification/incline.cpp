@@ -62,6 +62,7 @@ InclineHistory run_incline_in(const InclineRun& run, const Backend& backend) {
   ground.shape = ColliderShape::plane;
   ground.boundary = WallType::separate;
   ground.friction = {FrictionLaw::coulomb, run.mu};
+  ground.contact = run.contact;
   sim.add_collider(ground);
   sim.enable(Attribute::body_accel);
   sim.prepare();

@@ -18,6 +18,7 @@
 #include "engine/materials.hpp"
 #include "engine/particle_fill.hpp"
 #include "engine/verification/verification.hpp"
+#include "kernels/colliders.hpp"
 
 namespace firn {
 
@@ -33,6 +34,7 @@ struct InclineRun {
   double ramp = 0;       // gravity eased in over this time (s)
   double end_time = 0;
   VerificationMethod method;
+  ColliderContact contact = ColliderContact::nodes;  // the ground's
 };
 
 // Motion of the body's centre of mass, one sample per step.
