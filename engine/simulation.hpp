@@ -245,6 +245,8 @@ class Simulation {
     if (c.free_spin && !(c.inertia > 0)) throw std::invalid_argument("a free spin needs a positive moment of inertia");
     if (c.collider.contact == ColliderContact::pooled && pooled_collider() >= 0)
       throw std::invalid_argument("at most one collider with contact = pooled");
+    if (c.collider.contact == ColliderContact::pooled && c.collider.boundary != WallType::separate)
+      throw std::invalid_argument("a pooled collider needs boundary separate");
     colliders_.push_back(c);
     return int(colliders_.size()) - 1;
   }
@@ -338,6 +340,8 @@ class Simulation {
     min_node_mass_ = T(kEmptyNodeMassFraction * (pv.n ? double(lightest) : std::numeric_limits<double>::max()));
     if (pooled_collider() >= 0 && contact_active())
       throw std::invalid_argument("a collider with contact = pooled cannot be used with two contact groups");
+    if (pooled_collider() >= 0 && mirror_planes<T>(config_.walls.data(), grid_.geometry().nodes).any())
+      throw std::invalid_argument("a collider with contact = pooled cannot be used with mirror walls");
     prepared_ = true;
   }
 
@@ -839,7 +843,8 @@ class Simulation {
   // every iterate stays at or above the root, so stopping early keeps the contact from approaching
   // on average. S' = 0 means every inside node is held by its guard alone, whatever lambda below
   // it: lambda = 0. Then Coulomb's bound on the whole contact: the surface row keeps the share
-  // 1 - capacity / demand of its slip, or none (it sticks).
+  // 1 - capacity / demand of its slip, or none (it sticks), with capacity mu times the pool's
+  // normal impulse, mu at the row's mean slip.
   template <Transfer kTransfer>
   void solve_contact_pool(int c) {
     GridUpdateParams<T>& up = grid_params_[0];
@@ -858,12 +863,13 @@ class Simulation {
           lambda = 0;
           break;
         }
-        if (s.v[2] <= kPoolTolerance * lambda * mass || i == kPoolNewtonSteps) break;
-        lambda = std::max(0.0, lambda - s.v[2] / s.v[3]);
+        if (s.v[2] <= kPoolTolerance * lambda * mass || lambda == 0 || i == kPoolNewtonSteps) break;
+        lambda = std::max(0.0, lambda - s.v[2] / s.v[3]);  // at 0: evaluated once more, then done
       }
     }
     up.pool_lambda[c] = T(lambda);
-    const double capacity = s.v[4], demand = s.v[5];
+    const double demand = s.v[5], slip = s.v[6] > 0 ? demand / s.v[6] : 0.0;
+    const double capacity = double(up.colliders[c].friction.coefficient(T(slip))) * s.v[4];
     up.pool_keep[c] = T(demand > capacity ? 1 - capacity / demand : 0);
   }
   // Newton's steps are few: the guard holds a few nodes at most, and each step passes a breakpoint.

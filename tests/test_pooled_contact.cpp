@@ -80,8 +80,9 @@ TEST(PooledContact, RemovesTheMeanApproachUniformlyAndKeepsTheTurn) {
   EXPECT_DOUBLE_EQ(s.v[1], -32);  // sum m v_n
   EXPECT_NEAR(s.v[2], 0, 1e-12);  // S(1): no approach on average
   EXPECT_DOUBLE_EQ(s.v[3], 32);   // no node held by its guard
-  EXPECT_DOUBLE_EQ(s.v[4], 0);    // no friction capacity at mu = 0
+  EXPECT_DOUBLE_EQ(s.v[4], 32);   // the pool's normal impulse per dt, sum m max(lambda, least)
   EXPECT_NEAR(s.v[5], 16 * 0.2, 1e-12);  // the surface row's demand, sum m |v_t|
+  EXPECT_DOUBLE_EQ(s.v[6], 16);   // and its mass
 
   std::vector<double> before(b.data);
   b.p.pool_lambda[0] = lambda;
@@ -111,17 +112,17 @@ TEST(PooledContact, RemovesTheMeanApproachUniformlyAndKeepsTheTurn) {
 }
 
 // Coulomb's bound on the whole contact: the capacity mu sum m dv_n of the inside nodes against the
-// surface row's demand sum m |v_t|; the row keeps 1 - capacity / demand of its slip, and the ground
-// feels exactly mu times its normal force.
+// surface row's demand sum m |v_t|; the row keeps 1 - capacity / demand of its slip (as
+// Simulation::solve_contact_pool sets it), and the ground feels exactly mu times its normal force.
 TEST(PooledContact, TheSurfaceRowSlidesWithMuTimesThePoolsNormalImpulse) {
   OneBlock b(false);
   b.p.colliders[0].friction = {FrictionLaw::coulomb, 0.01};
   DoubleSums<kPoolSums> s;
   ContactPoolSums<double, Transfer::apic>{GridSlotsView<double>{b.data.data(), b.coords, Ch::kCount}, &b.p, 0, 1.0}(0, s);
-  EXPECT_NEAR(s.v[4], 0.01 * 32, 1e-12);
+  EXPECT_NEAR(s.v[4], 32, 1e-12);
   EXPECT_NEAR(s.v[5], 16 * 0.2, 1e-12);
   b.p.pool_lambda[0] = 1;
-  b.p.pool_keep[0] = 1 - s.v[4] / s.v[5];  // 0.9
+  b.p.pool_keep[0] = 1 - 0.01 * s.v[4] / s.v[5];  // 0.9
   grid_update_block<double, Transfer::apic>(b.data.data(), b.coords, 0, b.p);
   for (int l = 0; l < kBlockNodes; ++l) {
     int n[3];
@@ -160,7 +161,8 @@ TEST(PooledContact, TheGuardHoldsMaterialThatReachesTheSurface) {
   }
 }
 
-// pool_node's guard: a node's material a gap g above the surface may approach at g / dt more.
+// pool_node's guard: a node's material a gap g above the surface may approach at g / dt more,
+// with g measured at the step's start (the collider is posed at its end).
 TEST(PooledContact, TheGuardAllowsTheGapAndNoMore) {
   Collider<double> ground;
   ground.shape = ColliderShape::plane;
@@ -172,6 +174,9 @@ TEST(PooledContact, TheGuardAllowsTheGapAndNoMore) {
   EXPECT_EQ(q.role, kPoolInside);
   EXPECT_DOUBLE_EQ(q.vn, -2);
   EXPECT_NEAR(q.least, 2 - 0.02 / kDt, 1e-9);
+  Collider<double> receding = ground;  // moving down at 1 m/s: the gap at the step's start is
+  receding.velocity[1] = -1;           // 0.001 smaller than at its end, and v_n = -2 - (-1)
+  EXPECT_NEAR(pool_node(receding, x, v, 1.0, moment, kDx, 1e-4, kDt).least, 1 - 0.019 / kDt, 1e-9);
   moment[kBlockNodes] = 0.03 / kDx;  // x̄ 0.02 inside
   EXPECT_NEAR(pool_node(ground, x, v, 1.0, moment, kDx, 1e-4, kDt).least, 2, 1e-12);
   const double above[3] = {0, 0.04, 0}, far[3] = {0, 0.06, 0};

@@ -696,6 +696,8 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
           if (earlier.contact == ColliderContact::pooled) r.fail("contact", "only one collider may be pooled");
         for (const int group : s.contact_groups)
           if (group != 0) r.fail("contact", "pooled cannot be used with two contact groups");
+        for (const Wall<double>& w : s.config.walls)
+          if (w.mirror) r.fail("contact", "pooled cannot be used with mirror walls");
       }
       r.finish();
       s.colliders.push_back(c);

@@ -44,8 +44,9 @@ struct InclineHistory {
   std::vector<double> spin;      // angular velocity about -z, positive when rolling down (rad/s)
   // The ground's force on the body (N): along the slope and normal to it; and its moment (N m)
   // about the ground point below the centre of mass, whose normal force acts a lever arm
-  // moment / normal_force ahead of that point (the friction has no arm about it; it acts on the
-  // nodes one cell inside the ground, so a small one, dx friction / normal_force, is counted in).
+  // moment / normal_force ahead of that point (the friction has no arm about it where it acts on
+  // the ground's surface row, as a pooled ground's does; on a node-by-node ground it acts on the
+  // nodes one cell inside, so a small arm, dx friction / normal_force, is counted in).
   std::vector<double> ground_force, normal_force, ground_moment;
   long steps = 0;
   std::size_t particles = 0;

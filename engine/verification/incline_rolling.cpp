@@ -26,7 +26,7 @@
 // only its approaching nodes, those ahead of the lowest point, carry load: the normal force acts
 // ahead of the centre (0.03 R, 0.02 R, 0.004 R at R / dx = 10, 20, 40), the rolling cylinder slips
 // 5-7% on nodes stuck one cell inside the ground, and the errors do not converge (rolling -1.3%,
-// +0.8%, +1.9%; sliding +2.2%, +3.5%, +4.4%; docs/contact.md). Pooled, the lever arm is under
+// +0.8%, +1.9%; sliding +2.2%, +3.5%, +4.4%; docs/contact.md). Pooled, the lever arm is at most
 // 0.005 R at every level and the errors fall: rolling -1.33%, -0.60%, +0.25% and sliding within
 // 0.15%, in float as in double (docs/contact.md, attempt G). The bounds: 2% at R / dx = 10 (issue 19, item 1, float as
 // double), 1% at 20 and 0.5% at 40 (item 2), 1% on the sliding acceleration. The log gives, per

@@ -3,8 +3,9 @@
 // block slots, for a trial lambda. Over the collider's inside nodes:
 //   v[0] = sum m,  v[1] = sum m v_n,
 //   v[2] = S(lambda) = sum m (v_n + max(lambda, least)),  v[3] = S'(lambda) = sum m [least < lambda],
-//   v[4] = the friction's capacity, sum mu(|v_t|) m max(lambda, least);
-// over its surface row, v[5] = the friction's demand, sum m |v_t|.
+//   v[4] = the pool's normal impulse per unit time step, sum m max(lambda, least);
+// over its surface row, v[5] = the friction's demand, sum m |v_t|, and v[6] = sum m (the friction's
+// coefficient is taken at the row's mean slip, v[5] / v[6]: the slip it opposes).
 // The velocities are those the grid update's pooled collider acts on (pooled_node_velocity), and the
 // order of the sums depends only on the slot count, never on the threads.
 #pragma once
@@ -19,7 +20,7 @@
 
 namespace firn {
 
-constexpr int kPoolSums = 6;
+constexpr int kPoolSums = 7;
 
 template <class T, Transfer kTransfer>
 struct ContactPoolSums {
@@ -42,10 +43,11 @@ struct ContactPoolSums {
       const T m = data[GridChannels<kTransfer>::kMass * kBlockNodes + l];
       const PoolNode<T> q = pool_node(p.colliders[collider], x, v, m, moments + l, p.dx, skin, p.dt);
       if (q.role == kPoolNone) continue;
-      T t[3];
-      const T slip = pool_tangential(q, v, t);
       if (q.role == kPoolSurface) {
+        T t[3];
+        const T slip = pool_tangential(q, v, t);
         acc.v[5] += double(m) * double(slip);
+        acc.v[6] += double(m);
         continue;
       }
       const T dvn = pool_normal_change(q, lambda);
@@ -53,7 +55,7 @@ struct ContactPoolSums {
       acc.v[1] += double(m) * double(q.vn);
       acc.v[2] += double(m) * (double(q.vn) + double(dvn));
       if (q.least < lambda) acc.v[3] += double(m);
-      acc.v[4] += double(p.colliders[collider].friction.coefficient(slip)) * double(m) * double(dvn);
+      acc.v[4] += double(m) * double(dvn);
     }
   }
 };
