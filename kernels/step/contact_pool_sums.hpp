@@ -3,7 +3,7 @@
 // block slots, for a trial lambda. Over the collider's inside nodes:
 //   v[0] = sum m,  v[1] = sum m v_n,
 //   v[2] = S(lambda) = sum m (v_n + max(lambda, least)),  v[3] = S'(lambda) = sum m [least < lambda],
-//   v[4] = the pool's normal impulse per unit time step, sum m max(lambda, least);
+//   v[4] = the pool's normal impulse, sum m max(lambda, least);
 // over its surface row, v[5] = the friction's demand, sum m |v_t|, and v[6] = sum m (the friction's
 // coefficient is taken at the row's mean slip, v[5] / v[6]: the slip it opposes).
 // The velocities are those the grid update's pooled collider acts on (pooled_node_velocity), and the
