@@ -120,6 +120,13 @@ FIRN_HD void node_velocity(const T* data, int l, T inv_m, const GridUpdateParams
   for (int d = 0; d < 3; ++d) v[d] = data[(Ch::kVelocity + d) * kBlockNodes + l] * inv_m + p.dt * p.gravity[d];
 }
 
+// Mass-proportional damping (SimulationConfig::damping), when set.
+template <class T>
+FIRN_HD void apply_damping(const GridUpdateParams<T>& p, T v[3]) {
+  if (p.damping_factor != T(1))
+    for (int d = 0; d < 3; ++d) v[d] *= p.damping_factor;
+}
+
 // The domain walls whose bands hold the node.
 template <class T>
 FIRN_HD void apply_walls(const int block[3], int l, const GridUpdateParams<T>& p, T v[3]) {
@@ -148,8 +155,7 @@ FIRN_HD bool pooled_node_velocity(const T* data, const int block[3], int l, cons
   const T mass = data[GridChannels<kTransfer>::kMass * kBlockNodes + l];
   if (!(mass > p.min_mass)) return false;
   node_velocity<T, kTransfer>(data, l, T(1) / mass, p, v);
-  if (p.damping_factor != T(1))
-    for (int d = 0; d < 3; ++d) v[d] *= p.damping_factor;
+  apply_damping(p, v);
   apply_walls(block, l, p, v);
   return true;
 }
@@ -173,8 +179,7 @@ FIRN_HD bool start_node(T* data, int l, const GridUpdateParams<T>& p, T v[3], T&
     for (int d = 0; d < 3; ++d) gravity_work += mass * p.dt * p.gravity[d] * (v[d] - T(0.5) * p.dt * p.gravity[d]);
   if (kTransfer == Transfer::flip)
     for (int d = 0; d < 3; ++d) data[(Ch::kOldVelocity + d) * kBlockNodes + l] *= inv_m;
-  if (p.damping_factor != T(1))
-    for (int d = 0; d < 3; ++d) v[d] *= p.damping_factor;
+  apply_damping(p, v);
   return true;
 }
 

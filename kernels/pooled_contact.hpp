@@ -12,8 +12,9 @@
 // the contact is left alone, with one guard per node: no node may carry its material (x̄_i, the
 // mass-weighted particle position at the node) across the surface this step. So node i takes
 //   dv_n,i = max(lambda, least_i),  least_i = -v_n,i - max(0, g_i) / dt,
-// g_i = d(x̄_i) + dt v_c . n the gap at the step's start (d is measured at the collider's pose at the
-// step's end), and lambda >= 0 is the smallest value for which the contact does not approach on mass average,
+// with g_i = d(x̄_i) + dt v_c . n the gap at the step's start (d is measured at the collider's pose
+// at the step's end), and lambda >= 0 is the smallest value for which the contact does not
+// approach on mass average,
 //   S(lambda) = sum_i m_i (v_n,i + max(lambda, least_i)) >= 0.
 // This is the least kinetic-energy change (sum m dv^2) that satisfies both constraints (the
 // pooled one and every node's guard): its optimality conditions give dv_i = lambda + its own

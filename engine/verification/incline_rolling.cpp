@@ -27,10 +27,11 @@
 // ahead of the centre (0.03 R, 0.02 R, 0.004 R at R / dx = 10, 20, 40), the rolling cylinder slips
 // 5-7% on nodes stuck one cell inside the ground, and the errors do not converge (rolling -1.3%,
 // +0.8%, +1.9%; sliding +2.2%, +3.5%, +4.4%; docs/contact.md). Pooled, the lever arm is at most
-// 0.005 R at every level and the errors fall: rolling -1.33%, -0.60%, +0.25% and sliding within
-// 0.15%, in float as in double (docs/contact.md, attempt G). The bounds: 2% at R / dx = 10 (issue 19, item 1, float as
-// double), 1% at 20 and 0.5% at 40 (item 2), 1% on the sliding acceleration. The log gives, per
-// run, the ground's friction over its normal force and the normal force's lever arm.
+// 0.005 R at every level, the rolling error falls (-1.33%, -0.60%, +0.25%) and the sliding one
+// stays within 0.15%, in float as in double (docs/contact.md, attempt G). The bounds: 2% at
+// R / dx = 10 (issue 19, item 1, float as double), 1% at 20 and 0.5% at 40 (item 2), 1% on the
+// sliding acceleration. The log gives, per run, the ground's friction over its normal force and
+// the normal force's lever arm.
 #include <cmath>
 
 #include "engine/verification/incline.hpp"
