@@ -28,6 +28,7 @@
 
 #include "engine/block_compaction.hpp"
 #include "engine/collider_body.hpp"
+#include "engine/contact_pool_solve.hpp"
 #include "engine/elastic_moduli.hpp"
 #include "engine/materials.hpp"
 #include "engine/particle_binning.hpp"
@@ -55,6 +56,7 @@
 #include "kernels/step/constitutive_update.hpp"
 #include "kernels/step/elastic_energy.hpp"
 #include "kernels/step/contact_normals.hpp"
+#include "kernels/step/contact_pool_moments.hpp"
 #include "kernels/step/contact_pool_sums.hpp"
 #include "kernels/step/contact_update.hpp"
 #include "kernels/step/g2p_gather.hpp"
@@ -650,14 +652,16 @@ class Simulation {
       backend_.scatter_blocks("contact.normals", binning_.colouring(),
                               ContactNormalScatter<T, ShapeT>{pv, contact_.normals.view(), binning_.view(), g, group_b});
     }
-    const int pooled = pooled_collider();
-    if (pooled >= 0)  // with one group, the normals' first channels are the mass moments pool_node reads
-      backend_.scatter_blocks("contact.pool_moments", binning_.colouring(),
-                              ContactNormalScatter<T, ShapeT>{pv, pool_moments_.view(), bins, g, ParticleRanges{}});
     const MirrorPlanes<T> mirror = mirror_planes<T>(config_.walls.data(), g.nodes);
     if (mirror.any()) fold_mirror_images<kTransfer>(mirror, dt, contact);
     pose_colliders(dt, contact);
-    if (pooled >= 0) solve_contact_pool<kTransfer>(pooled);
+    const int pooled = pooled_collider();
+    if (pooled >= 0) {  // with one group, the normals' first channels are the mass moments pool_node reads
+      backend_.scatter_blocks("contact.pool_moments", binning_.colouring(),
+                              ContactPoolMomentsScatter<T, ShapeT>{{pv, pool_moments_.view(), bins, g, ParticleRanges{}},
+                                                                   &grid_params_[0], pooled});
+      solve_contact_pool<kTransfer>(pooled);
+    }
     backend_.parallel_for("grid_update", grid_.active_count(), GridUpdateSlots<T, kTransfer>{grid_.slots(), &grid_params_[0]});
     if (contact) {
       backend_.parallel_for("grid_update", grid_.active_count(),
@@ -838,43 +842,21 @@ class Simulation {
     }
   }
 
-  // The pooled collider's lambda and friction (kernels/pooled_contact.hpp). lambda: Newton's method on
-  // the convex, piecewise linear S(lambda) from lambda_0 = -(sum m v_n) / (sum m), where S >= 0;
-  // every iterate stays at or above the root, so stopping early keeps the contact from approaching
-  // on average. S' = 0 means every inside node is held by its guard alone, whatever lambda below
-  // it: lambda = 0. Then Coulomb's bound on the whole contact: the surface row keeps the share
-  // 1 - capacity / demand of its slip, or none (it sticks), with capacity mu times the pool's
-  // normal impulse, mu at the row's mean slip.
+  // The pooled collider's lambda and its surface row's friction share (engine/contact_pool_solve.hpp),
+  // each evaluation of S(lambda) a backend reduction, the same for any thread count.
   template <Transfer kTransfer>
   void solve_contact_pool(int c) {
     GridUpdateParams<T>& up = grid_params_[0];
-    const auto sums = [&](double lambda) {
-      return backend_.parallel_reduce("contact.pool", grid_.active_count(), DoubleSums<kPoolSums>{},
-                                      ContactPoolSums<T, kTransfer>{grid_.slots(), &up, c, T(lambda)}, Sum{});
-    };
-    DoubleSums<kPoolSums> s = sums(0.0);
-    double lambda = 0;
-    const double mass = s.v[0];
-    if (mass > 0 && s.v[1] < 0) {  // the contact approaches on average
-      lambda = -s.v[1] / mass;
-      for (int i = 0;; ++i) {
-        s = sums(lambda);
-        if (!(s.v[3] > 0)) {
-          lambda = 0;
-          break;
-        }
-        if (s.v[2] <= kPoolTolerance * lambda * mass || lambda == 0 || i == kPoolNewtonSteps) break;
-        lambda = std::max(0.0, lambda - s.v[2] / s.v[3]);  // at 0: evaluated once more, then done
-      }
-    }
-    up.pool_lambda[c] = T(lambda);
-    const double demand = s.v[5], slip = s.v[6] > 0 ? demand / s.v[6] : 0.0;
-    const double capacity = double(up.colliders[c].friction.coefficient(T(slip))) * s.v[4];
-    up.pool_keep[c] = T(demand > capacity ? 1 - capacity / demand : 0);
+    const Friction<T>& friction = up.colliders[c].friction;
+    const PoolSolution r = solve_pool(
+        [&](double lambda) {
+          return backend_.parallel_reduce("contact.pool", grid_.active_count(), DoubleSums<kPoolSums>{},
+                                          ContactPoolSums<T, kTransfer>{grid_.slots(), &up, c, T(lambda)}, Sum{});
+        },
+        [&](double slip) { return double(friction.coefficient(T(slip))); });
+    up.pool_lambda[c] = T(r.lambda);
+    up.pool_keep[c] = T(r.keep);
   }
-  // Newton's steps are few: the guard holds a few nodes at most, and each step passes a breakpoint.
-  static constexpr int kPoolNewtonSteps = 8;
-  static constexpr double kPoolTolerance = 1e-6;  // of lambda, on the mean normal velocity
 
   // Sums the per-block collider reactions and footprint columns of the last grid update (both
   // contact groups' with `contact`) on the backend (kernels/step/collider_sums.hpp).

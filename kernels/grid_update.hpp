@@ -70,15 +70,16 @@ constexpr int kReactionComponents = 6;
 // of them (a node it holds is inside the solid by more than the skin), so the block skips its
 // signed distance; a plane, whose box is unbounded, is skipped by the distance of the block's
 // corners. The same nodes take the same conditions; on a tire over a snow bed, most
-// blocks are far from the tire.
+// blocks are far from the tire. With `margin` > 0 the box is widened by that many cells on every
+// side; the test is monotone in the box, so a wider box keeps every collider a narrower one keeps.
 template <class T>
-FIRN_HD std::uint32_t colliders_near_block(const int block[3], const GridUpdateParams<T>& p) {
+FIRN_HD std::uint32_t colliders_near_block(const int block[3], const GridUpdateParams<T>& p, int margin = 0) {
   static_assert(kMaxColliders <= 32, "one bit per collider");
   const T skin = T(kColliderSkin) * p.dx;
-  T first[3], last[3];  // the block's first and last nodes
+  T first[3], last[3];  // the box's first and last nodes
   for (int d = 0; d < 3; ++d) {
-    first[d] = p.origin[d] + T(block[d] * kBlockSize) * p.dx;
-    last[d] = p.origin[d] + T(block[d] * kBlockSize + kBlockSize - 1) * p.dx;
+    first[d] = p.origin[d] + T(block[d] * kBlockSize - margin) * p.dx;
+    last[d] = p.origin[d] + T(block[d] * kBlockSize + kBlockSize - 1 + margin) * p.dx;
   }
   std::uint32_t near = 0;
   for (int c = 0; c < p.collider_count; ++c) {
@@ -91,7 +92,7 @@ FIRN_HD std::uint32_t colliders_near_block(const int block[3], const GridUpdateP
     for (int d = 0; d < 3; ++d) overlaps = overlaps && last[d] >= lo[d] - reach && first[d] <= hi[d] + reach;
     if (overlaps && k.shape == ColliderShape::plane) {
       // A plane's box is unbounded, but its signed distance is affine: no node is nearer than the
-      // nearest of the block's corners (by a cell, against rounding).
+      // nearest of the box's corners (by a cell, against rounding).
       T nearest = T(INFINITY);
       for (int corner = 0; corner < 8; ++corner) {
         const T x[3] = {corner & 1 ? last[0] : first[0], corner & 2 ? last[1] : first[1], corner & 4 ? last[2] : first[2]};

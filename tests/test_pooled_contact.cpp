@@ -1,11 +1,15 @@
 // The pooled collider contact (kernels/pooled_contact.hpp): what one block's update does with a
 // known lambda, the sums lambda is solved from, the guard that keeps material out of the collider,
-// and a body resting on a pooled ground through the whole step.
+// a body resting on a pooled ground through the whole step, and the solve for lambda and the
+// friction share (engine/contact_pool_solve.hpp) at each of its ends.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
+#include "engine/contact_pool_solve.hpp"
 #include "engine/particle_fill.hpp"
 #include "engine/simulation.hpp"
 #include "kernels/backend/openmp.hpp"
@@ -220,6 +224,120 @@ TEST(PooledContact, ABlockRestsOnPooledGroundTheSameOnOneAndTwoThreads) {
   const double weight = 1000 * 0.2 * 0.1 * 0.2 * 9.81;
   EXPECT_NEAR(force1, -weight, 0.02 * weight);
   EXPECT_GE(lowest1, 0.3);
+}
+
+// Simulation::solve_contact_pool's solve (engine/contact_pool_solve.hpp) on pools given node by node,
+// each inside node's mass, normal velocity and guard, summed as kernels/step/contact_pool_sums.hpp
+// sums them.
+struct NodePool {
+  struct Node {
+    double m, vn, least;
+  };
+  std::vector<Node> inside;
+  double demand = 0, row_mass = 0;  // the surface row's sum m |v_t| and sum m
+
+  DoubleSums<kPoolSums> operator()(double lambda) const {
+    DoubleSums<kPoolSums> s;
+    for (const Node& q : inside) {
+      const double dvn = std::max(lambda, q.least);
+      s.v[0] += q.m;
+      s.v[1] += q.m * q.vn;
+      s.v[2] += q.m * (q.vn + dvn);
+      if (q.least < lambda) s.v[3] += q.m;
+      s.v[4] += q.m * dvn;
+    }
+    s.v[5] = demand;
+    s.v[6] = row_mass;
+    return s;
+  }
+  // The smallest lambda >= 0 with S(lambda) >= 0, by bisection (S increases).
+  double smallest_root() const {
+    if ((*this)(0.0).v[2] >= 0) return 0;
+    double lo = 0, hi = 1;
+    while ((*this)(hi).v[2] < 0) hi *= 2;
+    for (int i = 0; i < 200; ++i) ((*this)(0.5 * (lo + hi)).v[2] < 0 ? lo : hi) = 0.5 * (lo + hi);
+    return hi;
+  }
+};
+const auto kFrictionless = [](double) { return 0.0; };
+
+// Random pools whose guards hold up to a third of the nodes (their material at the surface:
+// least = -v_n) with the rest free (far from it): Newton's lambda is the smallest feasible one, it
+// is feasible, and it takes a few evaluations.
+TEST(PooledContact, NewtonFindsTheSmallestFeasibleLambdaPastTheGuards) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  int held_somewhere = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    NodePool pool;
+    const double held_share = u(rng) / 3;
+    for (int i = 0; i < 40; ++i) {
+      const double vn = -2 + 3 * u(rng), gap = u(rng) < held_share ? 0 : 10;
+      pool.inside.push_back({0.5 + u(rng), vn, -vn - gap});
+    }
+    const DoubleSums<kPoolSums> s0 = pool(0.0);
+    if (!(s0.v[1] < 0)) continue;
+    const PoolSolution r = solve_pool(pool, kFrictionless);
+    const double root = pool.smallest_root();
+    held_somewhere += pool(root).v[3] < s0.v[0];
+    EXPECT_NEAR(r.lambda, root, 1e-6 * (1 + root)) << "trial " << trial;
+    EXPECT_GE(pool(r.lambda).v[2], -1e-9 * s0.v[0]) << "trial " << trial;
+    EXPECT_LE(r.evaluations, 6) << "trial " << trial;
+  }
+  EXPECT_GT(held_somewhere, 50);  // the guards did hold nodes at the root in many trials
+}
+
+// Every inside node held by its guard at lambda_0 (each approaching at 1 with its material at the
+// surface): S' = 0, lambda = 0, and every node still stops, at max(0, least) = its own approach.
+TEST(PooledContact, APoolHeldWhollyByItsGuardsTakesLambdaZero) {
+  NodePool pool;
+  for (int i = 0; i < 4; ++i) pool.inside.push_back({1.0 + i, -1, 1});
+  const PoolSolution r = solve_pool(pool, kFrictionless);
+  EXPECT_EQ(r.lambda, 0);
+  EXPECT_EQ(r.evaluations, 2);
+  EXPECT_EQ(pool(0.0).v[2], 0);  // no approach left
+  EXPECT_EQ(pool(0.0).v[4], 10); // the guards' whole change, sum m least
+}
+
+// A held node approaching at 3 and a free one leaving at 1: lambda_0 = 1, where S = 2 and S' = 1;
+// Newton's step lands at -1, is clamped to 0, where S(0) = 1 >= 0, evaluated once more and done.
+TEST(PooledContact, ANewtonStepBelowZeroStopsAtZero) {
+  NodePool pool;
+  pool.inside = {{1, -3, 3}, {1, 1, -1}};
+  const PoolSolution r = solve_pool(pool, kFrictionless);
+  EXPECT_EQ(r.lambda, 0);
+  EXPECT_EQ(r.evaluations, 3);
+  EXPECT_EQ(pool.smallest_root(), 0);
+}
+
+// Contact that leaves on average needs nothing: lambda = 0 from one evaluation.
+TEST(PooledContact, AContactThatLeavesTakesNoLambda) {
+  NodePool pool;
+  pool.inside = {{1, -1, 1}, {2, 1, -1}};
+  const PoolSolution r = solve_pool(pool, kFrictionless);
+  EXPECT_EQ(r.lambda, 0);
+  EXPECT_EQ(r.evaluations, 1);
+}
+
+// Coulomb's bound on the whole contact, mu taken at the surface row's mean slip: the row keeps
+// 1 - capacity / demand of its slip where the demand is larger, and sticks where it is not.
+TEST(PooledContact, TheRowKeepsWhatTheCapacityCannotTake) {
+  NodePool pool;
+  pool.inside = {{2, -1, -5}, {2, -1, -5}};  // lambda = 1: the pool's normal impulse sum m dv_n = 4
+  pool.demand = 3;                           // sum m |v_t| over a row of mass 2: mean slip 1.5
+  pool.row_mass = 2;
+  double slip_seen = -1;
+  const auto mu = [&](double slip) {
+    slip_seen = slip;
+    return 0.25;
+  };
+  PoolSolution r = solve_pool(pool, mu);
+  EXPECT_DOUBLE_EQ(r.lambda, 1);
+  EXPECT_DOUBLE_EQ(slip_seen, 1.5);
+  EXPECT_DOUBLE_EQ(r.keep, 1 - 0.25 * 4 / 3);
+  pool.demand = 0.9;  // below the capacity 1: the row sticks
+  r = solve_pool(pool, mu);
+  EXPECT_EQ(r.keep, 0);
 }
 
 }  // namespace

@@ -1,0 +1,32 @@
+// The pooled collider's mass moments (pool_node, kernels/pooled_contact.hpp): the contact normals'
+// scatter with one contact group (kernels/step/contact_normals.hpp), from only those particle blocks
+// whose particles can reach a block near the collider, the only blocks whose moments the pool reads
+// (kernels/grid_update.hpp, kernels/step/contact_pool_sums.hpp). A particle binned to block b adds
+// to nodes at most one cell before b's first node and two after its last (a support of three or
+// four nodes), so every block it reaches lies within one block of b. b's box widened by a block
+// holds each of those blocks' boxes, and colliders_near_block is monotone in the box, so b is kept
+// wherever one of them is near the collider.
+#pragma once
+
+#include <cstdint>
+
+#include "kernels/grid_update.hpp"
+#include "kernels/hd.hpp"
+#include "kernels/step/contact_normals.hpp"
+#include "kernels/step/p2g_scatter.hpp"
+
+namespace firn {
+
+template <class T, class ShapeT>
+struct ContactPoolMomentsScatter : ContactNormalScatter<T, ShapeT> {
+  const GridUpdateParams<T>* params;  // posed for this step's grid update
+  int collider;
+
+  FIRN_HD void operator()(std::uint32_t b) const {
+    int block[3];
+    this->grid.box.coords(b, block);
+    if (colliders_near_block(block, *params, kBlockSize) >> collider & 1u) scatter_block(*this, b);
+  }
+};
+
+}  // namespace firn
