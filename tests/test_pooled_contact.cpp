@@ -295,19 +295,21 @@ TEST(PooledContact, APoolHeldWhollyByItsGuardsTakesLambdaZero) {
   const PoolSolution r = solve_pool(pool, kFrictionless);
   EXPECT_EQ(r.lambda, 0);
   EXPECT_EQ(r.evaluations, 2);
-  EXPECT_EQ(pool(0.0).v[2], 0);  // no approach left
-  EXPECT_EQ(pool(0.0).v[4], 10); // the guards' whole change, sum m least
 }
 
 // A held node approaching at 3 and a free one leaving at 1: lambda_0 = 1, where S = 2 and S' = 1;
 // Newton's step lands at -1, is clamped to 0, where S(0) = 1 >= 0, evaluated once more and done.
+// The friction takes the pool's normal impulse at 0 (3, the held node's), not at 1 (4).
 TEST(PooledContact, ANewtonStepBelowZeroStopsAtZero) {
   NodePool pool;
-  pool.inside = {{1, -3, 3}, {1, 1, -1}};
-  const PoolSolution r = solve_pool(pool, kFrictionless);
+  pool.inside = {{1, -3, 3}, {1, 1, -2}};
+  pool.demand = 10;
+  pool.row_mass = 1;
+  const PoolSolution r = solve_pool(pool, [](double) { return 0.5; });
   EXPECT_EQ(r.lambda, 0);
   EXPECT_EQ(r.evaluations, 3);
   EXPECT_EQ(pool.smallest_root(), 0);
+  EXPECT_DOUBLE_EQ(r.keep, 1 - 0.5 * 3 / 10);
 }
 
 // Contact that leaves on average needs nothing: lambda = 0 from one evaluation.

@@ -1,11 +1,13 @@
 // The pooled collider's mass moments (pool_node, kernels/pooled_contact.hpp): the contact normals'
 // scatter with one contact group (kernels/step/contact_normals.hpp), from only those particle blocks
 // whose particles can reach a block near the collider, the only blocks whose moments the pool reads
-// (kernels/grid_update.hpp, kernels/step/contact_pool_sums.hpp). A particle binned to block b adds
-// to nodes at most one cell before b's first node and two after its last (a support of three or
-// four nodes), so every block it reaches lies within one block of b. b's box widened by a block
-// holds each of those blocks' boxes, and colliders_near_block is monotone in the box, so b is kept
-// wherever one of them is near the collider.
+// (kernels/grid_update.hpp, kernels/step/contact_pool_sums.hpp). A particle is binned to the block
+// of its stencil's base node (engine/particle_binning.hpp) and adds to nodes from there to at most
+// three past it (a support of three or four nodes), so every block it reaches is b or one block
+// further along each axis. b's box widened by a block holds each of those blocks' boxes, and
+// colliders_near_block is monotone in the box, so b is kept wherever one of them is near the
+// collider. The CUDA backend's scatter runs particle by particle and never calls operator(): there
+// the whole scatter still runs, with the same moments at the nodes the pool reads.
 #pragma once
 
 #include <cstdint>
