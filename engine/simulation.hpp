@@ -39,7 +39,9 @@
 #include "engine/state_stream.hpp"
 #include "engine/sparse_grid.hpp"
 #include "engine/stability_guard.hpp"
+#include "kernels/backend/openmp.hpp"
 #include "kernels/backend/reduce_chunks.hpp"
+#include "kernels/backend/serial.hpp"
 #include "kernels/binning_view.hpp"
 #include "kernels/body_acceleration.hpp"
 #include "kernels/boundary_conditions.hpp"
@@ -359,54 +361,14 @@ class Simulation {
 
   void step() { step(next_dt()); }
 
-  void step(double dt) {
-    prepare();
-    if (!loads_assigned_) assign_loads();
-    update_body_accelerations(time_ + dt);
-    const bool quadratic = config_.shape == Shape::quadratic;
-    switch (config_.transfer) {
-      case Transfer::apic:
-        quadratic ? step_impl<QuadraticBSpline<T>, Transfer::apic>(T(dt)) : step_impl<CubicBSpline<T>, Transfer::apic>(T(dt));
-        break;
-      case Transfer::pic:
-        quadratic ? step_impl<QuadraticBSpline<T>, Transfer::pic>(T(dt)) : step_impl<CubicBSpline<T>, Transfer::pic>(T(dt));
-        break;
-      case Transfer::flip:
-        quadratic ? step_impl<QuadraticBSpline<T>, Transfer::flip>(T(dt)) : step_impl<CubicBSpline<T>, Transfer::flip>(T(dt));
-        break;
-    }
-    time_ += dt;
-    last_dt_ = dt;
-    ++steps_;
-  }
+  void step(double dt);
 
   // Steps until `time`, shortening the last step to land on it exactly.
   void advance_to(double time) {
     while (time_ < time * (1 - 1e-12)) step(std::min(next_dt(), time - time_));
   }
 
-  Diagnostics diagnostics() {
-    const ParticleView<T> pv = storage_.view();
-    const MotionSums s = backend_.parallel_reduce("diagnostics.motion", pv.n, MotionSums{}, MotionTerm<T>{pv},
-                                                  MergeMotionSums{});
-    Diagnostics out;
-    out.kinetic_energy = s.ke;
-    for (int d = 0; d < 3; ++d) out.momentum[d] = s.p[d];
-    out.max_speed = s.max_speed;
-    out.min_J = pv.n ? s.min_J : 1.0;
-    for (const auto& m : materials_) {
-      if (m.range.end == m.range.begin) continue;
-      const std::size_t begin = m.range.begin;
-      std::visit(
-          [&](const auto& model) {
-            using Model = std::decay_t<decltype(model)>;
-            out.elastic_energy += backend_.parallel_reduce("diagnostics.elastic_energy", m.range.end - begin, 0.0,
-                                                           ElasticEnergy<T, Model>{pv, model, begin}, Sum{});
-          },
-          m.model);
-    }
-    return out;
-  }
+  Diagnostics diagnostics();
 
   // Physical indices of the particles in increasing id (ids are unique), into `order`, with the
   // sort's buffers (engine/radix_order.hpp); the form that returns them allocates all three.
@@ -1016,5 +978,59 @@ class Simulation {
   bool prepared_ = false;
   bool loads_assigned_ = true;  // false after add_load, until the next step assigns particles
 };
+
+// Defined out of the class, so that the CPU backends' instances below are compiled only where they
+// are instantiated explicitly (engine/simulation_openmp.cpp, engine/simulation_serial.cpp), not in
+// every translation unit that steps a simulation.
+template <class T, class Backend>
+void Simulation<T, Backend>::step(double dt) {
+  prepare();
+  if (!loads_assigned_) assign_loads();
+  update_body_accelerations(time_ + dt);
+  const bool quadratic = config_.shape == Shape::quadratic;
+  switch (config_.transfer) {
+    case Transfer::apic:
+      quadratic ? step_impl<QuadraticBSpline<T>, Transfer::apic>(T(dt)) : step_impl<CubicBSpline<T>, Transfer::apic>(T(dt));
+      break;
+    case Transfer::pic:
+      quadratic ? step_impl<QuadraticBSpline<T>, Transfer::pic>(T(dt)) : step_impl<CubicBSpline<T>, Transfer::pic>(T(dt));
+      break;
+    case Transfer::flip:
+      quadratic ? step_impl<QuadraticBSpline<T>, Transfer::flip>(T(dt)) : step_impl<CubicBSpline<T>, Transfer::flip>(T(dt));
+      break;
+  }
+  time_ += dt;
+  last_dt_ = dt;
+  ++steps_;
+}
+
+template <class T, class Backend>
+Diagnostics Simulation<T, Backend>::diagnostics() {
+  const ParticleView<T> pv = storage_.view();
+  const MotionSums s = backend_.parallel_reduce("diagnostics.motion", pv.n, MotionSums{}, MotionTerm<T>{pv},
+                                                MergeMotionSums{});
+  Diagnostics out;
+  out.kinetic_energy = s.ke;
+  for (int d = 0; d < 3; ++d) out.momentum[d] = s.p[d];
+  out.max_speed = s.max_speed;
+  out.min_J = pv.n ? s.min_J : 1.0;
+  for (const auto& m : materials_) {
+    if (m.range.end == m.range.begin) continue;
+    const std::size_t begin = m.range.begin;
+    std::visit(
+        [&](const auto& model) {
+          using Model = std::decay_t<decltype(model)>;
+          out.elastic_energy += backend_.parallel_reduce("diagnostics.elastic_energy", m.range.end - begin, 0.0,
+                                                         ElasticEnergy<T, Model>{pv, model, begin}, Sum{});
+        },
+        m.model);
+  }
+  return out;
+}
+
+extern template class Simulation<float, backend::OpenMP>;
+extern template class Simulation<double, backend::OpenMP>;
+extern template class Simulation<float, backend::Serial>;
+extern template class Simulation<double, backend::Serial>;
 
 }  // namespace firn

@@ -301,10 +301,7 @@ TEST(PooledContact, APoolHeldWhollyByItsGuardsTakesLambdaZero) {
 // Newton's step lands at -1, is clamped to 0, where S(0) = 1 >= 0, evaluated once more and done.
 // The friction takes the pool's normal impulse at 0 (3, the held node's), not at 1 (4).
 TEST(PooledContact, ANewtonStepBelowZeroStopsAtZero) {
-  NodePool pool;
-  pool.inside = {{1, -3, 3}, {1, 1, -2}};
-  pool.demand = 10;
-  pool.row_mass = 1;
+  const NodePool pool{{{1, -3, 3}, {1, 1, -2}}, /*demand=*/10, /*row_mass=*/1};
   const PoolSolution r = solve_pool(pool, [](double) { return 0.5; });
   EXPECT_EQ(r.lambda, 0);
   EXPECT_EQ(r.evaluations, 3);
@@ -314,8 +311,7 @@ TEST(PooledContact, ANewtonStepBelowZeroStopsAtZero) {
 
 // Contact that leaves on average needs nothing: lambda = 0 from one evaluation.
 TEST(PooledContact, AContactThatLeavesTakesNoLambda) {
-  NodePool pool;
-  pool.inside = {{1, -1, 1}, {2, 1, -1}};
+  const NodePool pool{{{1, -1, 1}, {2, 1, -1}}};
   const PoolSolution r = solve_pool(pool, kFrictionless);
   EXPECT_EQ(r.lambda, 0);
   EXPECT_EQ(r.evaluations, 1);
@@ -324,10 +320,9 @@ TEST(PooledContact, AContactThatLeavesTakesNoLambda) {
 // Coulomb's bound on the whole contact, mu taken at the surface row's mean slip: the row keeps
 // 1 - capacity / demand of its slip where the demand is larger, and sticks where it is not.
 TEST(PooledContact, TheRowKeepsWhatTheCapacityCannotTake) {
-  NodePool pool;
-  pool.inside = {{2, -1, -5}, {2, -1, -5}};  // lambda = 1: the pool's normal impulse sum m dv_n = 4
-  pool.demand = 3;                           // sum m |v_t| over a row of mass 2: mean slip 1.5
-  pool.row_mass = 2;
+  // lambda = 1: the pool's normal impulse sum m dv_n = 4; the row's sum m |v_t| 3 over its mass 2:
+  // mean slip 1.5.
+  NodePool pool{{{2, -1, -5}, {2, -1, -5}}, /*demand=*/3, /*row_mass=*/2};
   double slip_seen = -1;
   const auto mu = [&](double slip) {
     slip_seen = slip;
