@@ -2,8 +2,8 @@
 #   make deps   install the Debian packages the build needs (idempotent, skips what is present)
 #   make demo   deps + Release build + the known-answer problems, the snowball_pair scene (preview,
 #               rendered to frames/*.png and video.mp4) and the reference benchmark
-#   make test   deps + test-deps + Release build + the whole test suite, then a 30 s fuzz run where
-#               clang is present
+#   make test   deps + test-deps + Release build + the whole test suite (TEST_JOBS, default 2, at a
+#               time), then a 30 s fuzz run where clang is present
 #   make test-deps  install what only the tests use: chromium, which opens firn report's pages headless
 #   make fuzz   the fuzz preset's build and FUZZ_SECONDS (default 30) of the scene fuzzer (skipped
 #               without clang and libFuzzer; make fuzz-deps installs them)
@@ -15,6 +15,8 @@ TEST_PACKAGES := chromium
 FUZZ_PACKAGES := clang libclang-rt-14-dev libomp-14-dev
 SLURM_PACKAGES := slurmctld slurmd slurm-client munge
 JOBS ?= $(shell nproc)
+# Tests run two at a time: each one's OpenMP runs already use every core.
+TEST_JOBS ?= 2
 FUZZ_SECONDS ?= 30
 FIRN := build/release/firn
 
@@ -52,7 +54,7 @@ demo: build
 	$(FIRN) bench step --problem cube_drop --steps 50
 
 test: build test-deps
-	ctest --preset release
+	ctest --preset release -j $(TEST_JOBS)
 	$(MAKE) fuzz
 
 fuzz:
