@@ -1,7 +1,8 @@
 // The pooled collider contact (kernels/pooled_contact.hpp): what one block's update does with a
 // known lambda, the sums lambda is solved from, the guard that keeps material out of the collider,
-// a body resting on a pooled ground through the whole step, and the solve for lambda and the
-// friction share (engine/contact_pool_solve.hpp) at each of its ends.
+// a body resting on a pooled ground through the whole step, its moments scattered only near the
+// collider against the whole scatter, and the solve for lambda and the friction share
+// (engine/contact_pool_solve.hpp) at each of its ends.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,9 +14,11 @@
 #include "engine/particle_fill.hpp"
 #include "engine/simulation.hpp"
 #include "kernels/backend/openmp.hpp"
+#include "kernels/backend/serial.hpp"
 #include "kernels/grid_update.hpp"
 #include "kernels/pooled_contact.hpp"
 #include "kernels/step/contact_pool_sums.hpp"
+#include "kernels/step/p2g_scatter.hpp"
 
 namespace firn {
 namespace {
@@ -224,6 +227,56 @@ TEST(PooledContact, ABlockRestsOnPooledGroundTheSameOnOneAndTwoThreads) {
   const double weight = 1000 * 0.2 * 0.1 * 0.2 * 9.81;
   EXPECT_NEAR(force1, -weight, 0.02 * weight);
   EXPECT_GE(lowest1, 0.3);
+}
+
+// The serial backend with every block scatter run whole, particle by particle, past the scatter
+// functor's own operator(), as the CUDA backend runs it: there the pooled collider's moments are
+// scattered from every particle block, not only from those near the collider.
+struct WholeScatterSerial : backend::Serial {
+  template <class F>
+  void scatter_blocks(const char* name, const backend::BlockColouring& colouring, F&& f) const {
+    backend::Serial::scatter_blocks(name, colouring, [&](std::uint32_t b) { scatter_block(f, b); });
+  }
+};
+
+// A block pressed by gravity along +y against a pooled box above it while sliding along x, and a
+// ball far below (its blocks are more than two blocks from the box, so
+// kernels/step/contact_pool_moments.hpp skips them). The box is on the side the particles' stencils
+// reach past their own block (+y), where a particle block that is not near the box itself adds
+// moments to a block that is: the scatter must keep it (scattering only the blocks near the box
+// themselves, margin 0, fails this test).
+template <class Backend>
+std::uint64_t press_against_a_pooled_box(double* normal_impulse) {
+  SimulationConfig c;
+  c.dx = 0.02;
+  c.gravity = {0, 9.81, 0};
+  Simulation<float, Backend> sim(c);
+  sim.add_material({"rubber", "neo_hookean", 1000, ElasticModuli::from_E_nu(2e5, 0.3)});
+  const double h = c.dx / 2;
+  sim.add_particles(0, fill_box({0, 0, 0}, c.dx, 2, {0.4, 0.41, 0.4}, {0.6, 0.55, 0.6}), {0.5, 0, 0}, h * h * h);
+  sim.add_particles(0, fill_sphere({0, 0, 0}, c.dx, 2, {0.5, 0.2, 0.5}, 0.06), {0, 0, 0}, h * h * h);
+  Collider<double> box;
+  box.shape = ColliderShape::box;
+  box.center[0] = box.center[2] = 0.5;
+  box.center[1] = 0.61;  // its lower face at y = 0.56, on a block's first node row
+  box.half[0] = box.half[2] = 0.3;
+  box.half[1] = 0.05;
+  box.boundary = WallType::separate;
+  box.friction = {FrictionLaw::coulomb, 0.2};
+  box.contact = ColliderContact::pooled;
+  const int k = sim.add_collider(box);
+  sim.advance_to(0.06);
+  *normal_impulse = sim.collider(k).impulse[1];
+  return sim.state_hash();
+}
+
+TEST(PooledContact, MomentsScatteredNearTheColliderGiveTheWholeScattersState) {
+  double near_impulse = 0, whole_impulse = 0;
+  const std::uint64_t near = press_against_a_pooled_box<backend::Serial>(&near_impulse);
+  const std::uint64_t whole = press_against_a_pooled_box<WholeScatterSerial>(&whole_impulse);
+  EXPECT_EQ(near, whole);
+  EXPECT_EQ(near_impulse, whole_impulse);
+  EXPECT_GT(near_impulse, 0);  // the block reached the box and pressed on it
 }
 
 // Simulation::solve_contact_pool's solve (engine/contact_pool_solve.hpp) on pools given node by node,
