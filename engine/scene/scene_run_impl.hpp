@@ -1,6 +1,7 @@
 // The scene run of engine/scene/scene_run.hpp for any backend: included by one translation unit
-// per backend (scene_run.cpp for OpenMP, scene_run_serial.cpp, scene_run_cuda.cu), so that each
-// backend's step is compiled on its own, as it would be alone.
+// per backend (scene_run.cpp for OpenMP, scene_run_serial.cpp, scene_run_cuda.cu). The CUDA one
+// compiles its backend's step; the serial and OpenMP steps are compiled once, in
+// engine/simulation_serial.cpp and engine/simulation_openmp.cpp.
 #pragma once
 
 #include <chrono>

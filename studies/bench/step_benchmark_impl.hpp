@@ -1,6 +1,7 @@
 // The step benchmark of step_benchmark.hpp on any backend: included by one translation unit per
-// backend (step_benchmark.cpp for OpenMP, step_benchmark_serial.cpp, step_benchmark_cuda.cu), so
-// that each backend's step is compiled on its own, as it would be alone.
+// backend (step_benchmark.cpp for OpenMP, step_benchmark_serial.cpp, step_benchmark_cuda.cu). The
+// CUDA one compiles its backend's step; the serial and OpenMP steps are compiled once, in
+// engine/simulation_serial.cpp and engine/simulation_openmp.cpp.
 #pragma once
 
 #include <chrono>
