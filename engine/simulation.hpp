@@ -361,6 +361,7 @@ class Simulation {
 
   void step() { step(next_dt()); }
 
+  // One step of dt (defined below the class, as is diagnostics()).
   void step(double dt);
 
   // Steps until `time`, shortening the last step to land on it exactly.
@@ -368,6 +369,7 @@ class Simulation {
     while (time_ < time * (1 - 1e-12)) step(std::min(next_dt(), time - time_));
   }
 
+  // Kinetic and elastic energy, momentum, the largest speed and the smallest J of the particles.
   Diagnostics diagnostics();
 
   // Physical indices of the particles in increasing id (ids are unique), into `order`, with the
