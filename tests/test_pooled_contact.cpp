@@ -18,7 +18,6 @@
 #include "kernels/grid_update.hpp"
 #include "kernels/pooled_contact.hpp"
 #include "kernels/step/contact_pool_sums.hpp"
-#include "kernels/step/p2g_scatter.hpp"
 
 namespace firn {
 namespace {
@@ -229,28 +228,20 @@ TEST(PooledContact, ABlockRestsOnPooledGroundTheSameOnOneAndTwoThreads) {
   EXPECT_GE(lowest1, 0.3);
 }
 
-// The serial backend with every block scatter run whole, particle by particle, past the scatter
-// functor's own operator(), as the CUDA backend runs it: there the pooled collider's moments are
-// scattered from every particle block, not only from those near the collider.
-struct WholeScatterSerial : backend::Serial {
-  template <class F>
-  void scatter_blocks(const char* name, const backend::BlockColouring& colouring, F&& f) const {
-    backend::Serial::scatter_blocks(name, colouring, [&](std::uint32_t b) { scatter_block(f, b); });
-  }
-};
-
 // A block pressed by gravity along +y against a pooled box above it while sliding along x, and a
 // ball far below (its blocks are more than two blocks from the box, so
 // kernels/step/contact_pool_moments.hpp skips them). The box is on the side the particles' stencils
 // reach past their own block (+y), where a particle block that is not near the box itself adds
 // moments to a block that is: the scatter must keep it (scattering only the blocks near the box
-// themselves, margin 0, fails this test).
-template <class Backend>
-std::uint64_t press_against_a_pooled_box(double* normal_impulse) {
+// themselves, margin 0, fails this test). every_block: the serial backend scatters every block,
+// past the moments scatter's keeps(b).
+std::uint64_t press_against_a_pooled_box(bool every_block, double* normal_impulse) {
   SimulationConfig c;
   c.dx = 0.02;
   c.gravity = {0, 9.81, 0};
-  Simulation<float, Backend> sim(c);
+  backend::Serial serial;
+  serial.scatter_every_block = every_block;
+  Simulation<float, backend::Serial> sim(c, serial);
   sim.add_material({"rubber", "neo_hookean", 1000, ElasticModuli::from_E_nu(2e5, 0.3)});
   const double h = c.dx / 2;
   sim.add_particles(0, fill_box({0, 0, 0}, c.dx, 2, {0.4, 0.41, 0.4}, {0.6, 0.55, 0.6}), {0.5, 0, 0}, h * h * h);
@@ -272,8 +263,8 @@ std::uint64_t press_against_a_pooled_box(double* normal_impulse) {
 
 TEST(PooledContact, MomentsScatteredNearTheColliderGiveTheWholeScattersState) {
   double near_impulse = 0, whole_impulse = 0;
-  const std::uint64_t near = press_against_a_pooled_box<backend::Serial>(&near_impulse);
-  const std::uint64_t whole = press_against_a_pooled_box<WholeScatterSerial>(&whole_impulse);
+  const std::uint64_t near = press_against_a_pooled_box(false, &near_impulse);
+  const std::uint64_t whole = press_against_a_pooled_box(true, &whole_impulse);
   EXPECT_EQ(near, whole);
   EXPECT_EQ(near_impulse, whole_impulse);
   EXPECT_GT(near_impulse, 0);  // the block reached the box and pressed on it

@@ -6,7 +6,8 @@
 //   parallel_reduce: items are split into a number of thread blocks that depends only on n, each
 //     thread folds a fixed strided subset, and the partials are combined in a fixed binary tree
 //     (shared memory), then the blocks' partials by the same tree in a second launch.
-//   scatter_blocks (P2G): one thread block per grid block, colour after colour as on the CPU (same
+//   scatter_blocks (P2G): one thread block per grid block the scatter keeps (scatter_skip.hpp; a
+//     block left out returns at once), colour after colour as on the CPU (same
 //     colour blocks never share a node, so the flush into the grid needs no atomics). The block's
 //     scratch lives in shared memory. The block's particles go in rounds of as many as fit in
 //     shared memory (at most 64): each is staged (its contributions in shared memory) by one
@@ -42,6 +43,7 @@
 #include "kernels/backend/block_colouring.hpp"
 #include "kernels/backend/launch_profile.hpp"
 #include "kernels/backend/memory_space.hpp"
+#include "kernels/backend/scatter_skip.hpp"
 #include "kernels/backend/schedule.hpp"
 #include "kernels/block_window.hpp"
 #include "kernels/hd.hpp"
@@ -197,6 +199,7 @@ __global__ void scatter_colour(const std::uint32_t* blocks, S scatter) {
   __shared__ StagedOf<S> staged[kRound];
   __shared__ std::uint32_t base_masks[3][kBlockSize][kWords];
   const std::uint32_t b = blocks[blockIdx.x];
+  if (!scatter_keeps(scatter, b)) return;  // the whole thread block: before any barrier
   open_scratch(scatter, b, scratch);
   for (std::size_t m = 0; m < scatter.bins.material_count; ++m) {
     const std::uint32_t end = scatter.bins.bucket_end(m, b);
@@ -244,6 +247,7 @@ __global__ void scatter_colour_atomic(const std::uint32_t* blocks, S scatter) {
   using Scratch = typename S::Scratch;
   __shared__ Scratch scratch;
   const std::uint32_t b = blocks[blockIdx.x];
+  if (!scatter_keeps(scatter, b)) return;  // the whole thread block: before any barrier
   open_scratch(scatter, b, scratch);
   const AtomicScratchTarget<Scratch, S::kChannels> target{&scratch};
   for (std::size_t m = 0; m < scatter.bins.material_count; ++m)

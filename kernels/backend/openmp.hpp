@@ -14,6 +14,7 @@
 #include "kernels/backend/launch_profile.hpp"
 #include "kernels/backend/memory_space.hpp"
 #include "kernels/backend/reduce_chunks.hpp"
+#include "kernels/backend/scatter_skip.hpp"
 #include "kernels/backend/schedule.hpp"
 #include "kernels/lanes.hpp"
 
@@ -71,7 +72,8 @@ struct OpenMP {
       const long begin = static_cast<long>(colouring.begin[c]), end = static_cast<long>(colouring.begin[c + 1]);
       // The implicit barrier at the end of each loop separates the colours.
 #pragma omp for schedule(dynamic, 1)
-      for (long i = begin; i < end; ++i) f(colouring.blocks[i]);
+      for (long i = begin; i < end; ++i)
+        if (scatter_keeps(f, colouring.blocks[i])) f(colouring.blocks[i]);
     }
   }
 

@@ -10,6 +10,7 @@
 #include "kernels/backend/launch_profile.hpp"
 #include "kernels/backend/memory_space.hpp"
 #include "kernels/backend/reduce_chunks.hpp"
+#include "kernels/backend/scatter_skip.hpp"
 #include "kernels/backend/schedule.hpp"
 #include "kernels/lanes.hpp"
 
@@ -19,6 +20,10 @@ struct Serial {
   static constexpr const char* kName = "serial";
   static constexpr int kVectorBytes = kHostVectorBytes;  // lanes per batch: kernels/lanes.hpp
   LaunchProfile* profile = nullptr;
+  // true: scatter_blocks runs every block, also those a scatter's keeps(b) leaves out. Those add
+  // only to nodes nothing reads, so the results must not change: a check of keeps(b) (the
+  // restriction of the pooled contact's moments, tests/test_pooled_contact.cpp).
+  bool scatter_every_block = false;
 
   int threads() const { return 1; }
   static const MemorySpace& memory() { return kHostMemory; }
@@ -44,12 +49,13 @@ struct Serial {
     return result;
   }
 
-  // The P2G scatter strategy: f(block) for every block, colour after colour.
+  // The P2G scatter strategy: f(block) for every block f keeps (scatter_skip.hpp), colour after colour.
   template <class F>
   void scatter_blocks(const char* name, const BlockColouring& colouring, F&& f) const {
     ScopedLaunch timer(profile, name);
     for (int c = 0; c < BlockColouring::kColours; ++c)
-      for (std::size_t i = colouring.begin[c]; i < colouring.begin[c + 1]; ++i) f(colouring.blocks[i]);
+      for (std::size_t i = colouring.begin[c]; i < colouring.begin[c + 1]; ++i)
+        if (scatter_every_block || scatter_keeps(f, colouring.blocks[i])) f(colouring.blocks[i]);
   }
 
   // The G2P gather strategy: f(block) -> R for blocks[0 .. count), combined in block order into

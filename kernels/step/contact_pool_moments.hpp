@@ -6,8 +6,7 @@
 // three past it (a support of three or four nodes), so every block it reaches is b or one block
 // further along each axis. b's box widened by a block holds each of those blocks' boxes, and
 // colliders_near_block is monotone in the box, so b is kept wherever one of them is near the
-// collider. The CUDA backend's scatter runs particle by particle and never calls operator(): there
-// the whole scatter still runs, with the same moments at the nodes the pool reads.
+// collider. Every backend asks keeps(b) before it scatters block b (kernels/backend/scatter_skip.hpp).
 #pragma once
 
 #include <cstdint>
@@ -15,7 +14,6 @@
 #include "kernels/grid_update.hpp"
 #include "kernels/hd.hpp"
 #include "kernels/step/contact_normals.hpp"
-#include "kernels/step/p2g_scatter.hpp"
 
 namespace firn {
 
@@ -24,10 +22,10 @@ struct ContactPoolMomentsScatter : ContactNormalScatter<T, ShapeT> {
   const GridUpdateParams<T>* params;  // posed for this step's grid update
   int collider;
 
-  FIRN_HD void operator()(std::uint32_t b) const {
+  FIRN_HD bool keeps(std::uint32_t b) const {
     int block[3];
     this->grid.box.coords(b, block);
-    if (colliders_near_block(block, *params, kBlockSize) >> collider & 1u) scatter_block(*this, b);
+    return colliders_near_block(block, *params, kBlockSize) >> collider & 1u;
   }
 };
 
