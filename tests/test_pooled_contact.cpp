@@ -17,6 +17,7 @@
 #include "kernels/backend/serial.hpp"
 #include "kernels/grid_update.hpp"
 #include "kernels/pooled_contact.hpp"
+#include "kernels/step/contact_pool_moments.hpp"
 #include "kernels/step/contact_pool_sums.hpp"
 
 namespace firn {
@@ -268,6 +269,29 @@ TEST(PooledContact, MomentsScatteredNearTheColliderGiveTheWholeScattersState) {
   EXPECT_EQ(near, whole);
   EXPECT_EQ(near_impulse, whole_impulse);
   EXPECT_GT(near_impulse, 0);  // the block reached the box and pressed on it
+}
+
+// The moments scatter keeps the blocks whose particles can reach a block near the pooled collider
+// and leaves out the others, as every backend asks it (kernels/backend/scatter_skip.hpp). A keeps(b)
+// the backends did not find (not const, misspelt) would scatter every block, which the state test
+// above cannot tell from the restricted scatter.
+TEST(PooledContact, TheMomentsScatterKeepsOnlyTheBlocksThatReachTheCollider) {
+  GridUpdateParams<double> p{};
+  p.dx = 0.1;
+  for (int d = 0; d < 3; ++d) p.nodes[d] = 64;
+  p.collider_count = 1;
+  Collider<double>& ground = p.colliders[0];  // the solid y <= 0.16, in the first row of blocks
+  ground.shape = ColliderShape::plane;
+  ground.center[1] = 0.16;
+  ground.boundary = WallType::separate;
+  ground.contact = ColliderContact::pooled;
+  ContactPoolMomentsScatter<double, QuadraticBSpline<double>> moments{};
+  moments.grid.box = BlockBox{{16, 16, 16}};
+  moments.params = &p;
+  moments.collider = 0;
+  EXPECT_TRUE(backend::scatter_keeps(moments, moments.grid.box.id(5, 0, 5)));   // at the ground
+  EXPECT_TRUE(backend::scatter_keeps(moments, moments.grid.box.id(5, 1, 5)));   // reaching into that row
+  EXPECT_FALSE(backend::scatter_keeps(moments, moments.grid.box.id(5, 3, 5)));  // too far above
 }
 
 // Simulation::solve_contact_pool's solve (engine/contact_pool_solve.hpp) on pools given node by node,

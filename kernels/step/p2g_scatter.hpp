@@ -10,6 +10,8 @@
 //                            (t.add(i, j, k, values[kChannels]), nodes in stencil order), with
 //                            Scratch, grid and bins for a backend that shares a block's particles
 //                            and its scratch among threads (the CUDA backend).
+// A scatter functor may also have `bool keeps(b) const`: the blocks it leaves out are not scattered
+// on any backend (kernels/backend/scatter_skip.hpp).
 #pragma once
 
 #include <cstdint>
