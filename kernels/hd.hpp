@@ -35,6 +35,16 @@
 #define FIRN_FLATTEN __attribute__((flatten))
 #endif
 
+// On a function whose body is one loop over lanes, a lane's whole computation in scalar code
+// (FIRN_LANES): kept out of a FIRN_FLATTEN kernel. Inlined into the large flattened body, GCC 12
+// leaves such a loop scalar ("no vectype for stmt" on its first load); called, it vectorises
+// (docs/performance.md, "The J2 return's stretch in one loop"). Device code inlines as it sees fit.
+#if defined(__CUDA_ARCH__) || !defined(__GNUC__)
+#define FIRN_NOINLINE
+#else
+#define FIRN_NOINLINE __attribute__((noinline))
+#endif
+
 // On a short loop of fixed count inside a loop over lanes (a polynomial's terms): unrolled, so that
 // the lanes loop around it is innermost and vectorises.
 #if defined(__CUDACC__)

@@ -55,25 +55,28 @@ FIRN_HD T from_bits(typename FloatBits<T>::Int i) {
 }
 
 // x^(-1/K), K = 2 or 3, for positive normal x: a guess from the bits, then Newton's method on
-// y^-K = x, y <- y (K + 1 - x y^K) / K, which converges quadratically and divides by nothing.
-template <int K, class T, int W>
-FIRN_HD Lanes<T, W> inverse_root(const Lanes<T, W>& x) {
+// y^-K = x, y <- y (K + 1 - x y^K) / K, which converges quadratically and divides by nothing. One
+// value, for the body of a loop over lanes (FIRN_LANES), and on Lanes.
+template <int K, class T>
+FIRN_HD T inverse_root(T x) {
   static_assert(K == 2 || K == 3, "square and cube roots");
   using B = FloatBits<T>;
   constexpr typename B::Int kMagic = K == 2 ? B::kInverseSqrtMagic : B::kInverseCbrtMagic;
   constexpr int kSteps = K == 2 ? B::kInverseSqrtSteps : B::kInverseCbrtSteps;
+  // bits / K through T: only a guess is wanted, so its rounding does not matter
+  T y = from_bits<T>(kMagic - static_cast<typename B::Int>(T(bits_of(x)) * T(1.0 / K)));
+  for (int s = 0; s < kSteps; ++s) {
+    T xyk = x * y;  // x first: for x = 0 the guess's y^K would overflow to inf
+    for (int k = 1; k < K; ++k) xyk = xyk * y;
+    y = y * (T(K + 1) - xyk) * T(1.0 / K);
+  }
+  return y;
+}
+template <int K, class T, int W>
+FIRN_HD Lanes<T, W> inverse_root(const Lanes<T, W>& x) {
   Lanes<T, W> y;
   FIRN_LANES
-  for (int l = 0; l < W; ++l)  // bits / K through T: only a guess is wanted, so its rounding does not matter
-    y.v[l] = from_bits<T>(kMagic - static_cast<typename B::Int>(T(bits_of(x.v[l])) * T(1.0 / K)));
-  for (int s = 0; s < kSteps; ++s) {
-    FIRN_LANES
-    for (int l = 0; l < W; ++l) {
-      T xyk = x.v[l] * y.v[l];  // x first: for x = 0 the guess's y^K would overflow to inf
-      for (int k = 1; k < K; ++k) xyk = xyk * y.v[l];
-      y.v[l] = y.v[l] * (T(K + 1) - xyk) * T(1.0 / K);
-    }
-  }
+  for (int l = 0; l < W; ++l) y.v[l] = inverse_root<K>(x.v[l]);
   return y;
 }
 

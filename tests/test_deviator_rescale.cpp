@@ -1,11 +1,13 @@
 // The SVD-free pieces of the plastic returns (kernels/constitutive/deviator_rescale.hpp): the
 // eigenvalues of a symmetric 3x3 tensor, its square root on both sides of the near-identity series'
 // radius (squared back to A, continuous across the switch, repeated and widely spread eigenvalues),
-// and the rescale itself (det F = J_new, dev(bbar) = keep dev(bbar_tr), the trial rotation kept).
+// and the rescale itself (det F = J_new, dev(bbar) = keep dev(bbar_tr), the trial rotation kept);
+// the lane form's series in D against the scalar rescale up to its radius, where it hands lanes back.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "kernels/constitutive/deviator_rescale.hpp"
@@ -119,6 +121,78 @@ TEST(RescaleIsochoricDeviator, SetsVolumeAndDeviatorKeepsRotation) {
       EXPECT_LT(max_abs_diff(polar_rotation(out), polar_rotation(F)), 1e-12);
     }
 }
+
+// A trial F = J^(1/3) sqrt(Ibar I + D) R with dev(bbar_tr) = D = `size` Ibar times a random traceless
+// unit direction (Ibar from det(Ibar I + D) = 1), in double.
+Mat3<double> trial_with_deviator(std::mt19937& rng, double size, double J, double& Ibar) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  const double e0 = u(rng), e1 = u(rng), e2 = -e0 - e1, n = std::sqrt(e0 * e0 + e1 * e1 + e2 * e2);
+  const double d[3] = {size * e0 / n, size * e1 / n, size * e2 / n};
+  Ibar = 1 / std::cbrt((1 + d[0]) * (1 + d[1]) * (1 + d[2]));
+  const Mat3<double> Q = random_rotation(rng);
+  const Mat3<double> bbar = with_eigenvalues(Q, Ibar * (1 + d[0]), Ibar * (1 + d[1]), Ibar * (1 + d[2]));
+  return (std::cbrt(J) * spd_sqrt(bbar)) * random_rotation(rng);
+}
+
+// The lane form (float and double) against the scalar rescale in double, from the identity to just
+// inside its radius on ||D||_F / Ibar, for returns from none (keep 1) to full (keep 0): within a
+// few tens of roundings of T; just outside the radius an active lane is handed back, an inactive one
+// is not.
+template <class T>
+void check_lane_rescale() {
+  constexpr int W = 4;
+  using L = Lanes<T, W>;
+  std::mt19937 rng(31);
+  const double radius = std::sqrt(double(CoaxialSqrtSeries<T>::kRadiusSquared));
+  double worst = 0;
+  for (const double size : {1e-4, 0.1 * radius, 0.5 * radius, 0.99 * radius})
+    for (const double keep : {1.0, 0.9999, 0.5, 0.0})
+      for (int i = 0; i < 8; ++i) {
+        Mat3<L> F;
+        L Jm23, Ibar, J;
+        const L keep_l{T(keep)};
+        Mat3<double> want[W];
+        for (int l = 0; l < W; ++l) {
+          const double J_l = 0.6 + 0.1 * l;
+          double ibar;
+          const Mat3<double> Fd = trial_with_deviator(rng, size * (1 + 1e-3 * l), J_l, ibar);
+          Mat3<T> Ft;  // the lanes' input, rounded to T, and the reference from that rounded input
+          for (int q = 0; q < 9; ++q) F.m[q].v[l] = Ft.m[q] = T(Fd.m[q]);
+          Mat3<double> Fr;
+          for (int q = 0; q < 9; ++q) Fr.m[q] = double(Ft.m[q]);
+          const double Jr = determinant(Fr), Jm23r = std::pow(Jr, -2.0 / 3.0);
+          const double Ibar_r = Jm23r * trace(mul_transposed(Fr, Fr)) / 3;
+          want[l] = rescale_isochoric_deviator(Fr, Jm23r, Ibar_r, keep, Jr, 1.0);
+          Jm23.v[l] = T(Jm23r);
+          Ibar.v[l] = T(Ibar_r);
+          J.v[l] = T(Jr);
+        }
+        LaneMask<W> ok = LaneMask<W>::all();
+        const Mat3<L> got = rescale_isochoric_deviator_lanes(F, Jm23, Ibar, keep_l, J, LaneMask<W>::all(), ok);
+        for (int l = 0; l < W; ++l) {
+          ASSERT_TRUE(ok.m[l]) << size << " " << keep << " lane " << l;
+          for (int q = 0; q < 9; ++q) worst = std::max(worst, std::abs(double(got.m[q].v[l]) - want[l].m[q]));
+        }
+      }
+  // F is of order 1: a few roundings (measured: 1.5 and 2 epsilon in float and double).
+  EXPECT_LT(worst, 8 * std::numeric_limits<T>::epsilon());
+  // Outside the radius: handed back where active only.
+  Mat3<L> F;
+  L Jm23(T(1)), Ibar, keep_l(T(0.5)), J(T(1));
+  for (int l = 0; l < W; ++l) {
+    double ibar;
+    const Mat3<double> Fd = trial_with_deviator(rng, 1.01 * radius, 1.0, ibar);
+    for (int q = 0; q < 9; ++q) F.m[q].v[l] = T(Fd.m[q]);
+    Ibar.v[l] = T(ibar);
+  }
+  LaneMask<W> active = LaneMask<W>::all(), ok = LaneMask<W>::all();
+  active.m[1] = active.m[3] = 0;
+  rescale_isochoric_deviator_lanes(F, Jm23, Ibar, keep_l, J, active, ok);
+  for (int l = 0; l < W; ++l) EXPECT_EQ(ok.m[l], 1 - active.m[l]) << l;
+}
+
+TEST(RescaleIsochoricDeviatorLanes, MatchesTheScalarRescaleWithinItsRadiusFloat) { check_lane_rescale<float>(); }
+TEST(RescaleIsochoricDeviatorLanes, MatchesTheScalarRescaleWithinItsRadiusDouble) { check_lane_rescale<double>(); }
 
 }  // namespace
 }  // namespace firn

@@ -102,11 +102,11 @@ struct HyperelasticPlastic {
   }
 
   // project() and plastic_work() on W particles at once (kernels/lanes.hpp), the lane form of the
-  // same return: Newton without bisection for dgamma (solve_j2_return_lanes), the series square root
-  // (rescale_isochoric_deviator_lanes), J^(-1/3) and the power law by lane arithmetic
-  // (kernels/lane_math.hpp) instead of the C library. Returns the lanes that yielded; their F,
-  // alpha and plastic work density are updated. A lane outside that common case (J <= 0, a
-  // softening law that leaves Newton's bracket, a large step beyond the series' radius) is cleared
+  // same return: Newton without bisection for dgamma (solve_j2_return_lanes), the stretch sqrt(A) as
+  // a series in dev(bbar_tr) (rescale_isochoric_deviator_lanes), J^(-1/3) and the power law by lane
+  // arithmetic (kernels/lane_math.hpp) instead of the C library. Returns the lanes that yielded;
+  // their F, alpha and plastic work density are updated. A lane outside that common case (J <= 0, a
+  // softening law that leaves Newton's bracket, a deviator beyond the series' radius) is cleared
   // in `ok` with its values undefined, and the caller projects it with project().
   template <int W>
   FIRN_HD LaneMask<W> project_lanes(Mat3<Lanes<T, W>>& F, Lanes<T, W>& alpha, Lanes<T, W>& work,
