@@ -130,6 +130,31 @@ FIRN_HD Mat3<T> rescale_isochoric_deviator(const Mat3<T>& F_tr, T Jm23, T Ibar, 
   return ((T(2) + J_new / determinant(F)) / T(3)) * F;
 }
 
+// The invariants a return mapping on W lanes starts from, one loop over the lanes in scalar code
+// (FIRN_NOINLINE): J = det F, J^(-2/3) (by inverse_root), Ibar = tr(bbar) / 3 and ||dev(bbar)||_F
+// of bbar = J^(-2/3) F F^T.
+template <class T, int W>
+FIRN_NOINLINE FIRN_HD void isochoric_invariants_lanes(const Mat3<Lanes<T, W>>& F, Lanes<T, W>& J, Lanes<T, W>& Jm23,
+                                                      Lanes<T, W>& Ibar, Lanes<T, W>& dev_norm) {
+  FIRN_LANES
+  for (int l = 0; l < W; ++l) {
+    T f[9];  // F, row by row
+    FIRN_UNROLL
+    for (int q = 0; q < 9; ++q) f[q] = F.m[q].v[l];
+    const auto rows = [&](int r, int c) { return f[3 * r] * f[3 * c] + f[3 * r + 1] * f[3 * c + 1] + f[3 * r + 2] * f[3 * c + 2]; };
+    const T det = f[0] * (f[4] * f[8] - f[5] * f[7]) - f[1] * (f[3] * f[8] - f[5] * f[6]) + f[2] * (f[3] * f[7] - f[4] * f[6]);
+    const T y = inverse_root<3>(det), jm23 = y * y;
+    const T b00 = rows(0, 0), b11 = rows(1, 1), b22 = rows(2, 2), b01 = rows(0, 1), b12 = rows(1, 2), b20 = rows(2, 0);
+    const T third_trace = (b00 + b11 + b22) * T(1.0 / 3);
+    const T e0 = b00 - third_trace, e1 = b11 - third_trace, e2 = b22 - third_trace;
+    const T dd = e0 * e0 + e1 * e1 + e2 * e2 + T(2) * (b01 * b01 + b12 * b12 + b20 * b20);
+    J.v[l] = det;
+    Jm23.v[l] = jm23;
+    Ibar.v[l] = jm23 * third_trace;
+    dev_norm.v[l] = jm23 * (dd * inverse_root<2>(dd));  // sqrt(dd); 0 for dd = 0
+  }
+}
+
 // The series of rescale_isochoric_deviator_lanes: the powers of D it keeps, and the radius
 // ||D||_F^2 < kRadiusSquared Ibar^2 within which its remainder is below the precision's epsilon.
 template <class T>

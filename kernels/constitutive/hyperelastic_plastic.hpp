@@ -112,15 +112,10 @@ struct HyperelasticPlastic {
   FIRN_HD LaneMask<W> project_lanes(Mat3<Lanes<T, W>>& F, Lanes<T, W>& alpha, Lanes<T, W>& work,
                                     LaneMask<W>& ok) const {
     using L = Lanes<T, W>;
-    const L J = determinant(F);
+    L J, Jm23, Ibar, dev_norm;
+    isochoric_invariants_lanes(F, J, Jm23, Ibar, dev_norm);
     ok = ok && J > L(T(0));
-    const Mat3<L> b = mul_transposed(F, F);
-    const L Jm23 = pow_minus_two_thirds(J);
-    const L third_trace = trace(b) / L(T(3));
-    const L Ibar = Jm23 * third_trace;
-    Mat3<L> dev = b;
-    for (int d = 0; d < 3; ++d) dev(d, d) -= third_trace;
-    const L s_norm = L(elastic.G1) * Jm23 * sqrt(ddot(dev, dev));
+    const L s_norm = L(elastic.G1) * dev_norm;
     const L sqrt23(std::sqrt(T(2) / T(3)));
     L sigma_n, slope;
     hardening.evaluate(alpha, sigma_n, slope, ok);
@@ -140,9 +135,10 @@ struct HyperelasticPlastic {
     return plastic;
   }
 
+  // tau's six entries in ParticleView::tau's order (MooneyRivlin::kirchhoff_lanes).
   template <int W>
-  FIRN_HD Mat3<Lanes<T, W>> kirchhoff_lanes(const Mat3<Lanes<T, W>>& F) const {
-    return elastic.kirchhoff_of(F);
+  FIRN_HD void kirchhoff_lanes(const Mat3<Lanes<T, W>>& F, Lanes<T, W> (&tau)[6]) const {
+    elastic.kirchhoff_lanes(F, tau);
   }
 };
 

@@ -126,9 +126,10 @@ struct SnowCamClay {
     return LaneMask<W>::none();
   }
 
+  // tau's six entries in ParticleView::tau's order (MooneyRivlin::kirchhoff_lanes).
   template <int W>
-  FIRN_HD Mat3<Lanes<T, W>> kirchhoff_lanes(const Mat3<Lanes<T, W>>& F) const {
-    return elastic.kirchhoff_of(F);
+  FIRN_HD void kirchhoff_lanes(const Mat3<Lanes<T, W>>& F, Lanes<T, W> (&tau)[6]) const {
+    elastic.kirchhoff_lanes(F, tau);
   }
 
  private:

@@ -125,7 +125,8 @@ struct ConstitutiveUpdateLanes {
     }
     LaneMask<W> ok = LaneMask<W>::all();
     const LaneMask<W> plastic = one.model.project_lanes(F, s, work, ok);
-    const Mat3<L> tau = one.model.kirchhoff_lanes(F);
+    L tau[6];  // in ParticleView::tau's order
+    one.model.kirchhoff_lanes(F, tau);
     // Where a lane yielded, every lane's F and plastic scalar are stored, changed or not (a lane that
     // did not yield, or that the lane form handed back, holds the values it read); where none did,
     // nothing changed and nothing is stored, which spares the columns' write-back. Then the stress.
@@ -137,31 +138,29 @@ struct ConstitutiveUpdateLanes {
       FIRN_LANES
       for (int l = 0; l < count; ++l) state[first + l] = s.v[l];
     }
-    const int kTau[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};  // ParticleView::tau's order
     for (int c = 0; c < 6; ++c) {
       FIRN_LANES
-      for (int l = 0; l < count; ++l) pv.tau[c][first + l] = tau(kTau[c][0], kTau[c][1]).v[l];
+      for (int l = 0; l < count; ++l) pv.tau[c][first + l] = tau[c].v[l];
     }
-    const LaneMask<W> finite_stress = finite(tau(0, 0) + tau(1, 1) + tau(2, 2) + tau(0, 1) + tau(1, 2) + tau(2, 0));
-    // Summed in locals, in lane order (the same bits as one particle at a time), which stay in
-    // registers: summed through the reference, every lane went to memory and back (8% of the
-    // snowball pair's constitutive update). A lane handed back syncs them around its scalar update.
+    const LaneMask<W> finite_stress = finite(tau[0] + tau[1] + tau[2] + tau[3] + tau[4] + tau[5]);
+    // The lanes the lane form returned, summed in locals in lane order, which stay in registers: no
+    // call in the loop, so nothing goes to memory and back (with the scalar update called inside
+    // it, the plastic work's sum did at every lane: 18% of the snowball's update on AVX2). Then the
+    // lanes handed back, in lane order, each by the scalar update from the F and state stored
+    // above: the values it read.
     std::size_t first_bad = acc.first_bad;
     double max_modulus = acc.max_modulus, plastic_work = acc.plastic_work;
     for (int l = 0; l < count; ++l) {
+      if (!ok.m[l]) continue;
       const std::size_t p = first + l;
-      if (!ok.m[l]) {  // the scalar update, from the F and state stored above: the values it read
-        acc = {first_bad, max_modulus, plastic_work};
-        one(p - one.begin, acc);
-        first_bad = acc.first_bad, max_modulus = acc.max_modulus, plastic_work = acc.plastic_work;
-        continue;
-      }
       if (one.plastic_work && plastic.m[l]) plastic_work += double(pv.vol0[p]) * double(work.v[l]);
       if (!finite_stress.m[l] && p < first_bad) first_bad = p;
       const PlasticState<T> after = Model::kUsesAlpha ? PlasticState<T>{s.v[l], T(1)} : PlasticState<T>{T(0), s.v[l]};
       max_modulus = std::max(max_modulus, double(one.model.p_wave_modulus(after)));
     }
     acc = {first_bad, max_modulus, plastic_work};
+    for (int l = 0; l < count; ++l)
+      if (!ok.m[l]) one(first + l - one.begin, acc);
   }
 };
 
