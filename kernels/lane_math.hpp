@@ -65,8 +65,10 @@ FIRN_HD T inverse_root(T x) {
   constexpr int kSteps = K == 2 ? B::kInverseSqrtSteps : B::kInverseCbrtSteps;
   // bits / K through T: only a guess is wanted, so its rounding does not matter
   T y = from_bits<T>(kMagic - static_cast<typename B::Int>(T(bits_of(x)) * T(1.0 / K)));
+  FIRN_UNROLL
   for (int s = 0; s < kSteps; ++s) {
     T xyk = x * y;  // x first: for x = 0 the guess's y^K would overflow to inf
+    FIRN_UNROLL
     for (int k = 1; k < K; ++k) xyk = xyk * y;
     y = y * (T(K + 1) - xyk) * T(1.0 / K);
   }

@@ -122,11 +122,12 @@ TEST(RescaleIsochoricDeviator, SetsVolumeAndDeviatorKeepsRotation) {
     }
 }
 
-// A trial F = J^(1/3) sqrt(Ibar I + D) R with dev(bbar_tr) = D = `size` Ibar times a random traceless
-// unit direction (Ibar from det(Ibar I + D) = 1), in double.
-Mat3<double> trial_with_deviator(std::mt19937& rng, double size, double J, double& Ibar) {
+// A trial F = J^(1/3) sqrt(Ibar I + D) R with dev(bbar_tr) = D = `size` Ibar times a traceless unit
+// direction, random or diag(e) rotated (Ibar from det(Ibar I + D) = 1), in double.
+Mat3<double> trial_with_deviator(std::mt19937& rng, double size, double J, double& Ibar, const double* e = nullptr) {
   std::uniform_real_distribution<double> u(-1, 1);
-  const double e0 = u(rng), e1 = u(rng), e2 = -e0 - e1, n = std::sqrt(e0 * e0 + e1 * e1 + e2 * e2);
+  const double e0 = e ? e[0] : u(rng), e1 = e ? e[1] : u(rng), e2 = -e0 - e1;
+  const double n = std::sqrt(e0 * e0 + e1 * e1 + e2 * e2);
   const double d[3] = {size * e0 / n, size * e1 / n, size * e2 / n};
   Ibar = 1 / std::cbrt((1 + d[0]) * (1 + d[1]) * (1 + d[2]));
   const Mat3<double> Q = random_rotation(rng);
@@ -134,16 +135,16 @@ Mat3<double> trial_with_deviator(std::mt19937& rng, double size, double J, doubl
   return (std::cbrt(J) * spd_sqrt(bbar)) * random_rotation(rng);
 }
 
-// The lane form (float and double) against the scalar rescale in double, from the identity to just
-// inside its radius on ||D||_F / Ibar, for returns from none (keep 1) to full (keep 0): within a
-// few tens of roundings of T; just outside the radius an active lane is handed back, an inactive one
-// is not.
+// The largest difference of the lane form in T from the scalar rescale in double, over deviators
+// from 1e-4 to 0.99 `radius` (||D||_F / Ibar) along random directions and the two uniaxial ones
+// (the eigenvalue sqrt(2/3) ||D||_F, of either sign), for returns from none (keep 1) to full (keep 0).
+// With `inside`, every lane must be taken (not handed back).
 template <class T>
-void check_lane_rescale() {
+double lane_rescale_error(double radius, bool inside) {
   constexpr int W = 4;
   using L = Lanes<T, W>;
   std::mt19937 rng(31);
-  const double radius = std::sqrt(double(CoaxialSqrtSeries<T>::kRadiusSquared));
+  const double uniaxial[2][2] = {{2, -1}, {-2, 1}};
   double worst = 0;
   for (const double size : {1e-4, 0.1 * radius, 0.5 * radius, 0.99 * radius})
     for (const double keep : {1.0, 0.9999, 0.5, 0.0})
@@ -155,7 +156,7 @@ void check_lane_rescale() {
         for (int l = 0; l < W; ++l) {
           const double J_l = 0.6 + 0.1 * l;
           double ibar;
-          const Mat3<double> Fd = trial_with_deviator(rng, size * (1 + 1e-3 * l), J_l, ibar);
+          const Mat3<double> Fd = trial_with_deviator(rng, size * (1 + 1e-3 * l), J_l, ibar, i < 2 ? uniaxial[i] : nullptr);
           Mat3<T> Ft;  // the lanes' input, rounded to T, and the reference from that rounded input
           for (int q = 0; q < 9; ++q) F.m[q].v[l] = Ft.m[q] = T(Fd.m[q]);
           Mat3<double> Fr;
@@ -170,15 +171,46 @@ void check_lane_rescale() {
         LaneMask<W> ok = LaneMask<W>::all();
         const Mat3<L> got = rescale_isochoric_deviator_lanes(F, Jm23, Ibar, keep_l, J, LaneMask<W>::all(), ok);
         for (int l = 0; l < W; ++l) {
-          ASSERT_TRUE(ok.m[l]) << size << " " << keep << " lane " << l;
+          if (inside) {
+            EXPECT_TRUE(ok.m[l]) << size << " " << keep << " lane " << l;
+          }
           for (int q = 0; q < 9; ++q) worst = std::max(worst, std::abs(double(got.m[q].v[l]) - want[l].m[q]));
         }
       }
-  // F is of order 1: a few roundings (measured: 1.5 and 2 epsilon in float and double).
-  EXPECT_LT(worst, 8 * std::numeric_limits<T>::epsilon());
-  // Outside the radius: handed back where active only.
+  return worst;
+}
+
+// Within its radius the lane form is the scalar rescale to a few roundings of T (F is of order 1;
+// measured: 1.5 and 2 epsilon in float and double).
+TEST(RescaleIsochoricDeviatorLanes, MatchesTheScalarRescaleWithinItsRadiusFloat) {
+  const double radius = std::sqrt(double(CoaxialSqrtSeries<float>::kRadiusSquared));
+  EXPECT_LT(lane_rescale_error<float>(radius, true), 8 * std::numeric_limits<float>::epsilon());
+}
+TEST(RescaleIsochoricDeviatorLanes, MatchesTheScalarRescaleWithinItsRadiusDouble) {
+  const double radius = std::sqrt(double(CoaxialSqrtSeries<double>::kRadiusSquared));
+  EXPECT_LT(lane_rescale_error<double>(radius, true), 8 * std::numeric_limits<double>::epsilon());
+}
+
+// The float radius's truncation, seen in double arithmetic (both precisions sum the same terms):
+// below float's unit roundoff, as the bound rho^9 / (1 - rho) < 7.3e-9, rho = sqrt(2/3) 0.15, that
+// the float radius rests on says (kernels/constitutive/deviator_rescale.hpp). Measured: 7.4e-10;
+// with six terms instead of nine, 4.0e-7.
+TEST(RescaleIsochoricDeviatorLanes, TruncationAtTheFloatRadiusIsBelowFloatRounding) {
+  static_assert(CoaxialSqrtSeries<float>::kTerms == CoaxialSqrtSeries<double>::kTerms, "the same series");
+  const double radius = std::sqrt(double(CoaxialSqrtSeries<float>::kRadiusSquared));
+  EXPECT_LT(lane_rescale_error<double>(radius, false), 0.5 * std::numeric_limits<float>::epsilon());
+}
+
+// Just outside the radius an active lane is handed back (ok cleared), an inactive one is not.
+template <class T>
+void check_handed_back_outside_the_radius() {
+  constexpr int W = 4;
+  using L = Lanes<T, W>;
+  std::mt19937 rng(37);
+  const double radius = std::sqrt(double(CoaxialSqrtSeries<T>::kRadiusSquared));
   Mat3<L> F;
-  L Jm23(T(1)), Ibar, keep_l(T(0.5)), J(T(1));
+  L Jm23(T(1)), Ibar, J(T(1));
+  const L keep{T(0.5)};
   for (int l = 0; l < W; ++l) {
     double ibar;
     const Mat3<double> Fd = trial_with_deviator(rng, 1.01 * radius, 1.0, ibar);
@@ -187,12 +219,14 @@ void check_lane_rescale() {
   }
   LaneMask<W> active = LaneMask<W>::all(), ok = LaneMask<W>::all();
   active.m[1] = active.m[3] = 0;
-  rescale_isochoric_deviator_lanes(F, Jm23, Ibar, keep_l, J, active, ok);
+  rescale_isochoric_deviator_lanes(F, Jm23, Ibar, keep, J, active, ok);
   for (int l = 0; l < W; ++l) EXPECT_EQ(ok.m[l], 1 - active.m[l]) << l;
 }
 
-TEST(RescaleIsochoricDeviatorLanes, MatchesTheScalarRescaleWithinItsRadiusFloat) { check_lane_rescale<float>(); }
-TEST(RescaleIsochoricDeviatorLanes, MatchesTheScalarRescaleWithinItsRadiusDouble) { check_lane_rescale<double>(); }
+TEST(RescaleIsochoricDeviatorLanes, HandsBackActiveLanesOutsideItsRadius) {
+  check_handed_back_outside_the_radius<float>();
+  check_handed_back_outside_the_radius<double>();
+}
 
 }  // namespace
 }  // namespace firn

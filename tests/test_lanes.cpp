@@ -1,7 +1,7 @@
 // The lane form of the constitutive update (kernels/lanes.hpp, kernels/lane_math.hpp,
-// HyperelasticPlastic::project_lanes, SnowCamClay::project_lanes, ConstitutiveUpdateLanes): the lane
-// functions against the C library, the lane return against the scalar one, and a particle's result
-// independent of its batch.
+// HyperelasticPlastic::project_lanes, SnowCamClay::project_lanes, MooneyRivlin::kirchhoff_lanes,
+// ConstitutiveUpdateLanes): the lane functions against the C library, the lane return and stress
+// against the scalar ones, and a particle's result independent of its batch.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -68,7 +68,8 @@ struct SqrtSeriesRadius<double> {
 };
 
 // The binomial series sqrt(I + E) = I + E/2 - E^2/8 + E^3/16 (two matrix products), within its
-// radius SqrtSeriesRadius; V is T or Lanes of T (kernels/lanes.hpp).
+// radius SqrtSeriesRadius; V is T or Lanes of T (kernels/lanes.hpp) (the lane return uses
+// rescale_isochoric_deviator_lanes' series instead).
 template <class V>
 FIRN_HD Mat3<V> sqrt_near_identity(const Mat3<V>& E) {
   Mat3<V> S = V(1) / V(16) * E;
@@ -155,19 +156,19 @@ FIRN_NOINLINE FIRN_HD void isochoric_invariants_lanes(const Mat3<Lanes<T, W>>& F
   }
 }
 
-// The series of rescale_isochoric_deviator_lanes: the powers of D it keeps, and the radius
-// ||D||_F^2 < kRadiusSquared Ibar^2 within which its remainder is below the precision's epsilon.
+// The series of rescale_isochoric_deviator_lanes: its last power of D, and the radius on
+// ||D||_F max(u, v) (see there) within which the remainder is below the precision's epsilon.
 template <class T>
 struct CoaxialSqrtSeries;
 template <>
 struct CoaxialSqrtSeries<float> {
   static constexpr int kTerms = 8;
-  static constexpr float kRadiusSquared = 1e-2f;  // |d| / Ibar <= 0.082
+  static constexpr float kRadiusSquared = 0.0225f;  // rho <= sqrt(2/3) 0.15 = 0.122: rho^9 / (1 - rho) < 7.3e-9
 };
 template <>
 struct CoaxialSqrtSeries<double> {
   static constexpr int kTerms = 8;
-  static constexpr double kRadiusSquared = 1.6e-4;  // |d| / Ibar <= 0.0103
+  static constexpr double kRadiusSquared = 4e-4;  // rho <= sqrt(2/3) 0.02 = 0.0163: rho^9 / (1 - rho) < 8.6e-17
 };
 
 // rescale_isochoric_deviator on W lanes (kernels/lanes.hpp) for a volume-preserving return (J_new =
@@ -182,12 +183,16 @@ struct CoaxialSqrtSeries<double> {
 //     (j + 1) h_(j+1) = ((u - v) / 2 - (u + v) j) h_j - u v (j - 1) h_(j-1),
 //   and the powers of D reduce by Cayley-Hamilton, D^3 = J2 D + J3 I, so the series is
 //   c0 I + c1 D + c2 D^2 with scalar coefficients and one product D D.
-// Every eigenvalue d of D has |d| <= sqrt(2/3) ||D||_F, and |h_j| <= (1 + j / 2) max(u, v)^j for
-// keep <= 1, x ~ 1, so within the radius of CoaxialSqrtSeries the remainder after kTerms terms is
-// below the precision's epsilon (float: 5 x 0.082^9 = 8e-10). This replaces the 3x3 inverse, the
-// product A = P Q^-1 and the binomial series of sqrt(A) in matrix products of the scalar form, and
-// its radius on D admits larger steps than the scalar form's radius on A - I. An active lane
-// outside the radius, or whose x has not converged, is cleared in `ok` for the caller's scalar path.
+// The remainder: |C(1/2, i)| <= |C(-1/2, i)| and the C(-1/2, i) (-1)^i are positive, so h's
+// coefficients are bounded by those of (1 - r t)^(-1/2) (1 - r t)^(-1/2) = (1 - r t)^-1: |h_j| <= r^j,
+// r = max(u, v). Every eigenvalue d of D has |d| <= sqrt(2/3) ||D||_F, so with rho = sqrt(2/3)
+// ||D||_F r the terms j > kTerms sum to at most rho^(kTerms+1) / (1 - rho), which the radius of
+// CoaxialSqrtSeries keeps below the precision's epsilon (u <= 1 and v <= 1, since x >= 1 and
+// Ibar >= 1 by the means of eigenvalues whose product is 1). The radius bounds the deviator, not
+// the return's step: the scalar form's series bounds ||A - I||, which is small for any deviator
+// when keep is near 1; a material whose yield strain sqrt(2/3) sigma_y / G1 exceeds 0.15 (float)
+// or 0.02 (double) takes the scalar return at every yielding step. An active lane outside the
+// radius, or whose x has not converged, is cleared in `ok` for the caller's scalar path.
 template <class T, int W>
 FIRN_NOINLINE FIRN_HD Mat3<Lanes<T, W>> rescale_isochoric_deviator_lanes(
     const Mat3<Lanes<T, W>>& F_tr, const Lanes<T, W>& Jm23, const Lanes<T, W>& Ibar, const Lanes<T, W>& keep,
@@ -257,7 +262,7 @@ FIRN_NOINLINE FIRN_HD Mat3<Lanes<T, W>> rescale_isochoric_deviator_lanes(
     const T fix = (T(2) + J.v[l] / det) * T(1.0 / 3);
     FIRN_UNROLL
     for (int q = 0; q < 9; ++q) F_out.m[q].v[l] = fix * g[q];
-    const int within = int(DD < Series::kRadiusSquared * ibar * ibar) &
+    const int within = int(DD * u * u < Series::kRadiusSquared) & int(DD * v * v < Series::kRadiusSquared) &
                        int(std::fabs(step) <= T(4) * FloatLimits<T>::kEpsilon * x);
     ok.m[l] = ok.m[l] & (within | (active.m[l] ^ 1));
   }

@@ -24,7 +24,8 @@
 //      CMAME 99:61-112), which keeps J and s exactly. Since b_e and b_tr share eigenvectors, F_E is
 //      F_tr stretched by a symmetric tensor coaxial with b_tr (kernels/constitutive/deviator_rescale.hpp).
 // Neither path takes an SVD: the elastic one costs one F F^T, the plastic one the square root of a
-// symmetric 3x3 tensor (a series near the identity, a closed form elsewhere).
+// symmetric 3x3 tensor (a series near the identity, a closed form elsewhere; on lanes, a series in
+// dev(bbar_tr)).
 //
 // G2 != 0: the elastic response is the full Mooney-Rivlin one, but the yield function and the
 // return above use only the G1 part s = G1 dev(bbar_e): after a return the G1 part of the
