@@ -88,6 +88,18 @@ FIRN_HD T determinant(const Mat3<T>& a) {
   return a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0)) +
          a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0));
 }
+// The same two on a matrix held as 9 scalars row by row, as a loop over lanes keeps one lane's
+// matrices: (a a^T)(r, c), the dot product of rows r and c, and det a. GCC 12 vectorises such a loop
+// (kernels/hd.hpp, FIRN_NOINLINE) with the array passed by reference as here, but not with a Mat3
+// local or with the array passed as a pointer ("no vectype for stmt").
+template <class T>
+FIRN_HD T rows_dot(const T (&a)[9], int r, int c) {
+  return a[3 * r] * a[3 * c] + a[3 * r + 1] * a[3 * c + 1] + a[3 * r + 2] * a[3 * c + 2];
+}
+template <class T>
+FIRN_HD T determinant_of_rows(const T (&a)[9]) {
+  return a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) + a[2] * (a[3] * a[7] - a[4] * a[6]);
+}
 // a^{-1} as adjugate / det (no check for singular a).
 template <class T>
 FIRN_HD Mat3<T> inverse(const Mat3<T>& a) {

@@ -142,10 +142,9 @@ FIRN_NOINLINE FIRN_HD void isochoric_invariants_lanes(const Mat3<Lanes<T, W>>& F
     T f[9];  // F, row by row
     FIRN_UNROLL
     for (int q = 0; q < 9; ++q) f[q] = F.m[q].v[l];
-    const auto rows = [&](int r, int c) { return f[3 * r] * f[3 * c] + f[3 * r + 1] * f[3 * c + 1] + f[3 * r + 2] * f[3 * c + 2]; };
-    const T det = f[0] * (f[4] * f[8] - f[5] * f[7]) - f[1] * (f[3] * f[8] - f[5] * f[6]) + f[2] * (f[3] * f[7] - f[4] * f[6]);
+    const T det = determinant_of_rows(f);
     const T y = inverse_root<3>(det), jm23 = y * y;
-    const T b00 = rows(0, 0), b11 = rows(1, 1), b22 = rows(2, 2), b01 = rows(0, 1), b12 = rows(1, 2), b20 = rows(2, 0);
+    const T b00 = rows_dot(f, 0, 0), b11 = rows_dot(f, 1, 1), b22 = rows_dot(f, 2, 2), b01 = rows_dot(f, 0, 1), b12 = rows_dot(f, 1, 2), b20 = rows_dot(f, 2, 0);
     const T third_trace = (b00 + b11 + b22) * T(1.0 / 3);
     const T e0 = b00 - third_trace, e1 = b11 - third_trace, e2 = b22 - third_trace;
     const T dd = e0 * e0 + e1 * e1 + e2 * e2 + T(2) * (b01 * b01 + b12 * b12 + b20 * b20);
@@ -206,10 +205,9 @@ FIRN_NOINLINE FIRN_HD Mat3<Lanes<T, W>> rescale_isochoric_deviator_lanes(
     FIRN_UNROLL
     for (int q = 0; q < 9; ++q) f[q] = F_tr.m[q].v[l];
     const T ibar = Ibar.v[l], k = keep.v[l], jm23 = Jm23.v[l];
-    const auto rows = [&](int r, int c) { return f[3 * r] * f[3 * c] + f[3 * r + 1] * f[3 * c + 1] + f[3 * r + 2] * f[3 * c + 2]; };
     // D = Jm23 F F^T - Ibar I, symmetric.
-    const T d00 = jm23 * rows(0, 0) - ibar, d11 = jm23 * rows(1, 1) - ibar, d22 = jm23 * rows(2, 2) - ibar;
-    const T d01 = jm23 * rows(0, 1), d12 = jm23 * rows(1, 2), d20 = jm23 * rows(2, 0);
+    const T d00 = jm23 * rows_dot(f, 0, 0) - ibar, d11 = jm23 * rows_dot(f, 1, 1) - ibar, d22 = jm23 * rows_dot(f, 2, 2) - ibar;
+    const T d01 = jm23 * rows_dot(f, 0, 1), d12 = jm23 * rows_dot(f, 1, 2), d20 = jm23 * rows_dot(f, 2, 0);
     const T DD = d00 * d00 + d11 * d11 + d22 * d22 + T(2) * (d01 * d01 + d12 * d12 + d20 * d20);
     const T J2 = T(0.5) * DD;
     const T J3 = d00 * (d11 * d22 - d12 * d12) - d01 * (d01 * d22 - d12 * d20) + d20 * (d01 * d12 - d11 * d20);
@@ -258,7 +256,7 @@ FIRN_NOINLINE FIRN_HD Mat3<Lanes<T, W>> rescale_isochoric_deviator_lanes(
         g[3 * r + col] = s[3 * r] * f[col] + s[3 * r + 1] * f[3 + col] + s[3 * r + 2] * f[6 + col];
     }
     // det = J up to one rounding, as in rescale_isochoric_deviator.
-    const T det = g[0] * (g[4] * g[8] - g[5] * g[7]) - g[1] * (g[3] * g[8] - g[5] * g[6]) + g[2] * (g[3] * g[7] - g[4] * g[6]);
+    const T det = determinant_of_rows(g);
     const T fix = (T(2) + J.v[l] / det) * T(1.0 / 3);
     FIRN_UNROLL
     for (int q = 0; q < 9; ++q) F_out.m[q].v[l] = fix * g[q];

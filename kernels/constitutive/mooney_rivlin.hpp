@@ -77,10 +77,10 @@ struct MooneyRivlin {
       T f[9];
       FIRN_UNROLL
       for (int q = 0; q < 9; ++q) f[q] = F.m[q].v[l];
-      const auto rows = [&](int r, int c) { return f[3 * r] * f[3 * c] + f[3 * r + 1] * f[3 * c + 1] + f[3 * r + 2] * f[3 * c + 2]; };
       // B = F F^T, in tau's order.
-      const T b[6] = {rows(0, 0), rows(1, 1), rows(2, 2), rows(0, 1), rows(1, 2), rows(2, 0)};
-      const T J = f[0] * (f[4] * f[8] - f[5] * f[7]) - f[1] * (f[3] * f[8] - f[5] * f[6]) + f[2] * (f[3] * f[7] - f[4] * f[6]);
+      const T b[6] = {rows_dot(f, 0, 0), rows_dot(f, 1, 1), rows_dot(f, 2, 2),
+                      rows_dot(f, 0, 1), rows_dot(f, 1, 2), rows_dot(f, 2, 0)};
+      const T J = determinant_of_rows(f);
       const T y = inverse_root<3>(J), Jm23 = y * y;
       const T I1 = b[0] + b[1] + b[2];
       T t[6], diag = K / T(2) * (J * J - T(1)) - G1 * Jm23 * I1 / T(3);
