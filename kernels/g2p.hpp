@@ -42,9 +42,6 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
   // weighted along z per lane (Wz). Sums over b first (weights w_b and b w_b), then over a; the
   // lanes are folded over c at the end, where the z moment takes its factor c.
   constexpr int K = GridChannels<kTransfer>::kGatherCount, L = S * K;
-  T Wz[L];
-  for (int c = 0; c < S; ++c)
-    for (int r = 0; r < K; ++r) Wz[c * K + r] = w[2][c];
   T s0[L] = {}, sa[L] = {}, sb[L] = {};
   for (int a = 0; a < S; ++a) {
     T t0[L] = {}, tb[L] = {};
@@ -65,31 +62,47 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
       sb[l] += wa * tb[l];
     }
   }
-  T vp[4] = {T(0), T(0), T(0), T(0)}, mo[3][4] = {}, vold[4] = {T(0), T(0), T(0), T(0)};
-  for (int c = 0; c < S; ++c)
-    for (int r = 0; r < 4; ++r) {
+  // Fold the lanes over c, a node's channel r at a time (lane c K + r), into vectors over r (the
+  // velocity component; r = 3 is the pad): v_pic, the moments mo[k] = sum w v o_k and, for FLIP,
+  // the old velocity. In that form the rest is column arithmetic on 4-lane vectors: column k of C
+  // is cs (mo[k] - v_pic f_k), and column j of F_new = (I + dt C) F is sum_k (I + dt C)_k F(k, j).
+  T vp[4], mo[3][4], vold[4];
+  FIRN_LANES
+  for (int r = 0; r < 4; ++r) {
+    T v = T(0), m0 = T(0), m1 = T(0), m2 = T(0), vo = T(0);
+    for (int c = 0; c < S; ++c) {
       const int l = c * K + r;
-      vp[r] += Wz[l] * s0[l];
-      mo[0][r] += Wz[l] * sa[l];
-      mo[1][r] += Wz[l] * sb[l];
-      mo[2][r] += (Wz[l] * T(c)) * s0[l];
-      if constexpr (kTransfer == Transfer::flip) vold[r] += Wz[l + 4] * s0[l + 4];
+      v += w[2][c] * s0[l];
+      m0 += w[2][c] * sa[l];
+      m1 += w[2][c] * sb[l];
+      m2 += (w[2][c] * T(c)) * s0[l];
+      if constexpr (kTransfer == Transfer::flip) vo += w[2][c] * s0[l + 4];
     }
-  T Bo[9];
-  for (int r = 0; r < 3; ++r)
-    for (int k = 0; k < 3; ++k) Bo[3 * r + k] = mo[k][r];
+    vp[r] = v;
+    mo[0][r] = m0;
+    mo[1][r] = m1;
+    mo[2][r] = m2;
+    vold[r] = vo;
+  }
 
-  // x_i - x_p = (o - f) dx, so C = D^-1 dx (Bo - v f^T) = kDinv / dx (Bo - v f^T).
+  // x_i - x_p = (o - f) dx, so C = D^-1 dx (mo - v f^T) = kDinv / dx (mo - v f^T).
   const T cs = ShapeT::kDinv * g.inv_dx;
-  Mat3<T> C;
+  T Ccol[3][4], Gcol[3][4], Fcol[3][4];
+  for (int k = 0; k < 3; ++k) {
+    FIRN_LANES
+    for (int r = 0; r < 4; ++r) {
+      Ccol[k][r] = cs * (mo[k][r] - vp[r] * f[k]);
+      Gcol[k][r] = dt * Ccol[k][r] + (r == k ? T(1) : T(0));
+    }
+  }
+  for (int j = 0; j < 3; ++j) {
+    const T F0 = pv.F[j][p], F1 = pv.F[3 + j][p], F2 = pv.F[6 + j][p];
+    FIRN_LANES
+    for (int r = 0; r < 4; ++r) Fcol[j][r] = Gcol[0][r] * F0 + Gcol[1][r] * F1 + Gcol[2][r] * F2;
+  }
+  Mat3<T> Fn;
   for (int r = 0; r < 3; ++r)
-    for (int k = 0; k < 3; ++k) C(r, k) = cs * (Bo[3 * r + k] - vp[r] * f[k]);
-
-  Mat3<T> F;
-  for (int q = 0; q < 9; ++q) F.m[q] = pv.F[q][p];
-  Mat3<T> G = dt * C;
-  for (int d = 0; d < 3; ++d) G(d, d) += T(1);
-  const Mat3<T> Fn = G * F;
+    for (int j = 0; j < 3; ++j) Fn(r, j) = Fcol[j][r];
 
   T vn[3];
   for (int r = 0; r < 3; ++r)
@@ -101,7 +114,8 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
   }
   for (int q = 0; q < 9; ++q) pv.F[q][p] = Fn.m[q];
   if constexpr (kTransfer == Transfer::apic)  // PIC and FLIP need C for F only: not stored
-    for (int q = 0; q < 9; ++q) pv.C[q][p] = C.m[q];
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) pv.C[3 * r + k][p] = Ccol[k][r];
   return ParticleCheck<T>{std::sqrt(vn[0] * vn[0] + vn[1] * vn[1] + vn[2] * vn[2]), determinant(Fn),
                           dt * std::sqrt(vp[0] * vp[0] + vp[1] * vp[1] + vp[2] * vp[2])};
 }
