@@ -10,18 +10,25 @@
 
 namespace firn {
 
+// The axes are the lanes of short vectors, a fourth lane repeating z, so that one subtraction,
+// conversion and weight polynomial serve all three axes (issue 15; docs/performance.md, "The
+// stencil's axes as lanes"). Each axis takes the same operations as it would alone, so the results
+// are the same bits. Lane 3 is padding: kernels read lanes 0-2.
 template <class T, class ShapeT>
 struct Stencil {
-  int base[3];
-  T f[3];
-  T w[3][ShapeT::kSupport];
+  int base[4];
+  T f[4];
+  T w[4][ShapeT::kSupport];
 };
 
 template <class T, class ShapeT>
 FIRN_HD Stencil<T, ShapeT> particle_stencil(const ParticleView<T>& pv, std::size_t p, const GridGeometry<T>& g) {
+  const T x[4] = {pv.x[0][p], pv.x[1][p], pv.x[2][p], pv.x[2][p]};
+  const T origin[4] = {g.origin[0], g.origin[1], g.origin[2], g.origin[2]};
   Stencil<T, ShapeT> s;
-  for (int d = 0; d < 3; ++d) {
-    const T X = (pv.x[d][p] - g.origin[d]) * g.inv_dx;
+  FIRN_LANES
+  for (int d = 0; d < 4; ++d) {
+    const T X = (x[d] - origin[d]) * g.inv_dx;
     s.base[d] = ShapeT::base(X);
     s.f[d] = X - T(s.base[d]);
     ShapeT::weights(s.f[d], s.w[d]);
