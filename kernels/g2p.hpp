@@ -38,9 +38,9 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
 
   // Accumulate sum w v_i and its first moments sum w v_i o_k (o the node offset). A row of the
   // stencil (fixed a, b; c = 0 .. S-1) is S consecutive nodes of K values (velocity and a zero pad,
-  // then for FLIP the old velocity and a pad), read as one short vector of lanes l = c K + r and
-  // weighted along z per lane (Wz). Sums over b first (weights w_b and b w_b), then over a; the
-  // lanes are folded over c at the end, where the z moment takes its factor c.
+  // then for FLIP the old velocity and a pad), read as one short vector of lanes l = c K + r. Sums
+  // over b first (weights w_b and b w_b), then over a; the lanes are folded over c at the end, where
+  // they take their weight along z, w_c, and the z moment its factor c.
   constexpr int K = GridChannels<kTransfer>::kGatherCount, L = S * K;
   T s0[L] = {}, sa[L] = {}, sb[L] = {};
   for (int a = 0; a < S; ++a) {

@@ -17,9 +17,10 @@
 #define FIRN_HD_LAMBDA
 #endif
 
-// Marks a loop over a kernel's short vector of lanes (a stencil row's nodes x channels): the CPU
-// compiler vectorises it as one loop rather than unrolling it into scalar code first (OpenMP's
-// `simd`, which needs no threads); nothing in device code, where a thread is one lane.
+// Marks a loop over a kernel's short vector of lanes (a stencil row's nodes x channels, a node's
+// channels, the stencil's axes, a batch's particles): the CPU compiler vectorises it as one loop
+// rather than unrolling it into scalar code first (OpenMP's `simd`, which needs no threads);
+// nothing in device code, where a thread is one lane.
 #if defined(__CUDA_ARCH__) || !defined(_OPENMP)
 #define FIRN_LANES
 #else
