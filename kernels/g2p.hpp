@@ -49,17 +49,21 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
       const T* row = grid.row(base[0] + a, base[1] + b, base[2]);
       const T wb = w[1][b], wbb = w[1][b] * T(b);
       FIRN_LANES
-      for (int l = 0; l < L; ++l) {
-        t0[l] += wb * row[l];
-        tb[l] += wbb * row[l];
+      for (int l = 0; l < L; ++l) t0[l] += wb * row[l];
+      if (b > 0) {  // a moment's weight, b w_b here, is 0 at b = 0: those terms are skipped
+        FIRN_LANES
+        for (int l = 0; l < L; ++l) tb[l] += wbb * row[l];
       }
     }
     const T wa = w[0][a], waa = w[0][a] * T(a);
     FIRN_LANES
     for (int l = 0; l < L; ++l) {
       s0[l] += wa * t0[l];
-      sa[l] += waa * t0[l];
       sb[l] += wa * tb[l];
+    }
+    if (a > 0) {
+      FIRN_LANES
+      for (int l = 0; l < L; ++l) sa[l] += waa * t0[l];
     }
   }
   // Fold the lanes over c, a node's channel r at a time (lane c K + r), into vectors over r (the
@@ -75,7 +79,7 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
       v += w[2][c] * s0[l];
       m0 += w[2][c] * sa[l];
       m1 += w[2][c] * sb[l];
-      m2 += (w[2][c] * T(c)) * s0[l];
+      if (c > 0) m2 += (w[2][c] * T(c)) * s0[l];
       if constexpr (kTransfer == Transfer::flip) vo += w[2][c] * s0[l + 4];
     }
     vp[r] = v;
