@@ -61,7 +61,7 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
       s0[l] += wa * t0[l];
       sb[l] += wa * tb[l];
     }
-    if (a > 0) {
+    if (a > 0) {  // likewise a w_a
       FIRN_LANES
       for (int l = 0; l < L; ++l) sa[l] += waa * t0[l];
     }
@@ -79,7 +79,7 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
       v += w[2][c] * s0[l];
       m0 += w[2][c] * sa[l];
       m1 += w[2][c] * sb[l];
-      if (c > 0) m2 += (w[2][c] * T(c)) * s0[l];
+      if (c > 0) m2 += (w[2][c] * T(c)) * s0[l];  // and c w_c
       if constexpr (kTransfer == Transfer::flip) vo += w[2][c] * s0[l + 4];
     }
     vp[r] = v;
