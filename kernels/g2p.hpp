@@ -47,7 +47,7 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
     T t0[L] = {}, tb[L] = {};
     for (int b = 0; b < S; ++b) {
       const T* row = grid.row(base[0] + a, base[1] + b, base[2]);
-      const T wb = w[1][b], wbb = w[1][b] * T(b);
+      const T wb = w[b][1], wbb = w[b][1] * T(b);
       FIRN_LANES
       for (int l = 0; l < L; ++l) t0[l] += wb * row[l];
       if (b > 0) {  // a moment's weight, b w_b here, is 0 at b = 0: those terms are skipped
@@ -55,7 +55,7 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
         for (int l = 0; l < L; ++l) tb[l] += wbb * row[l];
       }
     }
-    const T wa = w[0][a], waa = w[0][a] * T(a);
+    const T wa = w[a][0], waa = w[a][0] * T(a);
     FIRN_LANES
     for (int l = 0; l < L; ++l) {
       s0[l] += wa * t0[l];
@@ -76,11 +76,11 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
     T v = T(0), m0 = T(0), m1 = T(0), m2 = T(0), vo = T(0);
     for (int c = 0; c < S; ++c) {
       const int l = c * K + r;
-      v += w[2][c] * s0[l];
-      m0 += w[2][c] * sa[l];
-      m1 += w[2][c] * sb[l];
-      if (c > 0) m2 += (w[2][c] * T(c)) * s0[l];  // and c w_c
-      if constexpr (kTransfer == Transfer::flip) vo += w[2][c] * s0[l + 4];
+      v += w[c][2] * s0[l];
+      m0 += w[c][2] * sa[l];
+      m1 += w[c][2] * sb[l];
+      if (c > 0) m2 += (w[c][2] * T(c)) * s0[l];  // and c w_c
+      if constexpr (kTransfer == Transfer::flip) vo += w[c][2] * s0[l + 4];
     }
     vp[r] = v;
     mo[0][r] = m0;

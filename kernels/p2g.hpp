@@ -65,8 +65,8 @@ FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGe
   // to the stack element by element and read back as one vector, it stalled P2G; docs/performance.md).
   FIRN_LANES
   for (int l = 0; l < L; ++l) {
-    T wz = w[2][0];
-    for (int c = 1; c < S; ++c) wz = l >= c * K ? w[2][c] : wz;
+    T wz = w[0][2];
+    for (int c = 1; c < S; ++c) wz = l >= c * K ? w[c][2] : wz;
     Wz[l] = wz;
   }
   for (int c = 0; c < S; ++c)
@@ -82,7 +82,7 @@ FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGe
     FIRN_LANES
     for (int l = 0; l < L; ++l) Pa[l] = P[l] + T(a) * L0[l];
     for (int b = 0; b < S; ++b) {
-      const T wab = w[0][a] * w[1][b];
+      const T wab = w[a][0] * w[b][1];
       T val[L];
       FIRN_LANES
       for (int l = 0; l < L; ++l) val[l] = (wab * Wz[l]) * (Pa[l] + T(b) * L1[l]);

@@ -13,12 +13,13 @@ namespace firn {
 // The axes are the lanes of short vectors, a fourth lane repeating z, so that one subtraction,
 // conversion and weight polynomial serve all three axes (issue 15; docs/performance.md, "The
 // stencil's axes as lanes"). Each axis takes the same operations as it would alone, so the results
-// are the same bits. Lane 3 is padding: kernels read lanes 0-2.
+// are the same bits. Lane 3 is padding: kernels read lanes 0-2. The weights are stored node by node,
+// w[c][d], so that each node's weights along the axes are one vector store.
 template <class T, class ShapeT>
 struct Stencil {
   int base[4];
   T f[4];
-  T w[4][ShapeT::kSupport];
+  T w[ShapeT::kSupport][4];  // w[c][d]: node c's weight along axis d
 };
 
 template <class T, class ShapeT>
@@ -31,7 +32,7 @@ FIRN_HD Stencil<T, ShapeT> particle_stencil(const ParticleView<T>& pv, std::size
     const T X = (x[d] - origin[d]) * g.inv_dx;
     s.base[d] = ShapeT::base(X);
     s.f[d] = X - T(s.base[d]);
-    ShapeT::weights(s.f[d], s.w[d]);
+    ShapeT::weights(s.f[d], &s.w[0][d], 4);
   }
   return s;
 }

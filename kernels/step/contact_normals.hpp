@@ -50,7 +50,7 @@ struct ContactNormalScatter {
       for (int b = 0; b < kSupport; ++b) {
         T v[kSupport * kChannels];
         for (int c = 0; c < kSupport; ++c) {
-          const T w = st.w[0][a] * st.w[1][b] * st.w[2][c], smw = sign * pv.mass[p] * w;
+          const T w = st.w[a][0] * st.w[b][1] * st.w[c][2], smw = sign * pv.mass[p] * w;
           T* node = v + c * kChannels;
           node[0] = smw * (st.f[0] - T(a));
           node[1] = smw * (st.f[1] - T(b));

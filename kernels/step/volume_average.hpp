@@ -57,7 +57,7 @@ struct VolumeScatter {
       for (int b = 0; b < kSupport; ++b) {
         T v[kSupport * kChannels];
         for (int c = 0; c < kSupport; ++c) {
-          const T w = st.w[0][a] * st.w[1][b] * st.w[2][c];
+          const T w = st.w[a][0] * st.w[b][1] * st.w[c][2];
           v[c * kChannels] = w * m;
           v[c * kChannels + 1] = w * mJ;
         }
@@ -103,7 +103,7 @@ struct VolumeGather {
         const T* row = window.row(st.base[0] + a, st.base[1] + b, st.base[2]);
         for (int c = 0; c < S; ++c) {
           const T* node = row + c * 2;  // m, m J
-          if (node[0] > T(0)) J_bar += st.w[0][a] * st.w[1][b] * st.w[2][c] * node[1] / node[0];
+          if (node[0] > T(0)) J_bar += st.w[a][0] * st.w[b][1] * st.w[c][2] * node[1] / node[0];
         }
       }
     const T J = determinant(particle_F(pv, p));
