@@ -1,6 +1,6 @@
 // The lane form of the constitutive update (kernels/lanes.hpp, kernels/lane_math.hpp,
 // HyperelasticPlastic::project_lanes, SnowCamClay::project_lanes, MooneyRivlin::kirchhoff_lanes,
-// ConstitutiveUpdateLanes): the lane functions against the C library, the lane return and stress
+// NeoHookean::kirchhoff_lanes, ConstitutiveUpdateLanes): the lane functions against the C library, the lane return and stress
 // against the scalar ones, and a particle's result independent of its batch.
 #include <gtest/gtest.h>
 
@@ -307,6 +307,40 @@ TEST(LaneReturn, CamClayBatchedUpdateIsTheScalarUpdate) {
   EXPECT_EQ(batched.second.max_modulus, scalar.second.max_modulus);
   EXPECT_EQ(batched.second.first_bad, kNoParticle);
   for (std::size_t k = 0; k < shifted.first.size(); ++k) EXPECT_EQ(shifted.first[k], batched.first[k + 16]) << k;
+}
+
+// Neo-Hookean's batched update (an elastic model: the stress alone) is the scalar update to the
+// bit, as it takes ln J from the same C library function and the rest by the same operations, and
+// F is left as it was; one particle short of whole batches, and a particle that inverted (J < 0:
+// NaN stress) is named as the first bad one by both.
+TEST(LaneStress, NeoHookeanBatchedUpdateIsTheScalarUpdate) {
+  const NeoHookean<float> model{4e5f, 6e5f};
+  const int n = 5 * kW - 2;
+  std::vector<Mat3<float>> F = trial_states(n + 1);
+  F[kW + 3] = -1.0f * Mat3<float>::identity();
+  const std::vector<float> unused(n + 1, 1.0f);
+  const auto scalar = run_update(model, F, unused, false, 0), batched = run_update(model, F, unused, true, 0),
+             shifted = run_update(model, F, unused, true, 1);
+  ASSERT_EQ(scalar.first.size(), batched.first.size());
+  for (std::size_t k = 0; k < scalar.first.size(); ++k) {
+    if (std::isnan(scalar.first[k]))
+      EXPECT_TRUE(std::isnan(batched.first[k])) << k;
+    else
+      EXPECT_EQ(batched.first[k], scalar.first[k]) << "particle " << k / 16 << " field " << k % 16;
+    if (k % 16 < 9) {
+      EXPECT_EQ(batched.first[k], F[k / 16].m[k % 16]) << k;
+    }
+  }
+  EXPECT_EQ(batched.second.max_modulus, scalar.second.max_modulus);
+  EXPECT_EQ(batched.second.max_modulus, double(model.p_wave_modulus()));
+  EXPECT_EQ(scalar.second.first_bad, std::size_t(kW + 3));
+  EXPECT_EQ(batched.second.first_bad, std::size_t(kW + 3));
+  EXPECT_EQ(batched.second.plastic_work, 0.0);
+  for (std::size_t k = 0; k < shifted.first.size(); ++k) {
+    if (!std::isnan(batched.first[k + 16])) {
+      EXPECT_EQ(shifted.first[k], batched.first[k + 16]) << k;
+    }
+  }
 }
 
 }  // namespace

@@ -89,13 +89,15 @@ struct HasLanes<Model, std::void_t<decltype(Model::kLanes)>> : std::integral_con
 
 // ConstitutiveUpdate on batches of W particles (kernels/lanes.hpp; issue 15): item `batch` covers
 // particles [batch W, batch W + W) of the range, the last batch padded with copies of its first
-// particle whose results are dropped. The lanes carry F and the model's one plastic scalar (alpha
-// for J2 plasticity, J_P for Cam-clay snow) and run the model's lane form; a lane the lane form
-// leaves to the scalar path (ok cleared) is updated by ConstitutiveUpdate itself. Every particle's
-// result depends on its own state only, so it is the same for any batching and thread count.
+// particle whose results are dropped. The lanes carry F and, for a plastic model, its one plastic
+// scalar (alpha for J2 plasticity, J_P for Cam-clay snow) and run the model's lane form; a lane the
+// lane form leaves to the scalar path (ok cleared) is updated by ConstitutiveUpdate itself. An
+// elastic model's lane form is its stress alone. Every particle's result depends on its own state
+// only, so it is the same for any batching and thread count.
 template <class T, class Model, int W>
 struct ConstitutiveUpdateLanes {
-  static_assert(Model::kUsesAlpha != Model::kUsesJp, "the lanes carry F and one plastic scalar");
+  static_assert(!Model::kPlastic || Model::kUsesAlpha != Model::kUsesJp,
+                "a plastic model's lanes carry F and one plastic scalar");
   ConstitutiveUpdate<T, Model> one;
   std::size_t n;  // particles in the range
 
@@ -114,23 +116,25 @@ struct ConstitutiveUpdateLanes {
         FIRN_LANES
         for (int l = 0; l < W; ++l) F.m[q].v[l] = pv.F[q][first + l];
       }
-      FIRN_LANES
-      for (int l = 0; l < W; ++l) s.v[l] = state[first + l];
+      if constexpr (Model::kPlastic) {
+        FIRN_LANES
+        for (int l = 0; l < W; ++l) s.v[l] = state[first + l];
+      }
     } else {
       for (int l = 0; l < W; ++l) {
         const std::size_t p = first + (l < count ? l : 0);
         for (int q = 0; q < 9; ++q) F.m[q].v[l] = pv.F[q][p];
-        s.v[l] = state[p];
+        if constexpr (Model::kPlastic) s.v[l] = state[p];
       }
     }
-    LaneMask<W> ok = LaneMask<W>::all();
-    const LaneMask<W> plastic = one.model.project_lanes(F, s, work, ok);
+    LaneMask<W> ok = LaneMask<W>::all(), plastic = LaneMask<W>::none();
+    if constexpr (Model::kPlastic) plastic = one.model.project_lanes(F, s, work, ok);
     L tau[6];  // in ParticleView::tau's order
     one.model.kirchhoff_lanes(F, tau);
     // Where a lane yielded, every lane's F and plastic scalar are stored, changed or not (a lane that
     // did not yield, or that the lane form handed back, holds the values it read); where none did,
     // nothing changed and nothing is stored, which spares the columns' write-back. Then the stress.
-    if (any(plastic)) {
+    if (Model::kPlastic && any(plastic)) {
       for (int q = 0; q < 9; ++q) {
         FIRN_LANES
         for (int l = 0; l < count; ++l) pv.F[q][first + l] = F.m[q].v[l];
@@ -155,7 +159,9 @@ struct ConstitutiveUpdateLanes {
       const std::size_t p = first + l;
       if (one.plastic_work && plastic.m[l]) plastic_work += double(pv.vol0[p]) * double(work.v[l]);
       if (!finite_stress.m[l] && p < first_bad) first_bad = p;
-      const PlasticState<T> after = Model::kUsesAlpha ? PlasticState<T>{s.v[l], T(1)} : PlasticState<T>{T(0), s.v[l]};
+      const PlasticState<T> after = Model::kUsesAlpha ? PlasticState<T>{s.v[l], T(1)}
+                                    : Model::kUsesJp  ? PlasticState<T>{T(0), s.v[l]}
+                                                      : PlasticState<T>{};
       max_modulus = std::max(max_modulus, double(one.model.p_wave_modulus(after)));
     }
     acc = {first_bad, max_modulus, plastic_work};
