@@ -80,8 +80,8 @@ struct ConstitutiveUpdate {
   }
 };
 
-// Whether a model has the lane form of its return and stress (Model::kLanes, with project_lanes and
-// kirchhoff_lanes), for ConstitutiveUpdateLanes.
+// Whether a model has the lane form of its stress and, for a plastic model, its return (Model::kLanes,
+// with kirchhoff_lanes, and project_lanes where kPlastic), for ConstitutiveUpdateLanes.
 template <class Model, class = void>
 struct HasLanes : std::false_type {};
 template <class Model>
