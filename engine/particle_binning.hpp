@@ -49,24 +49,41 @@ class ParticleBinning {
     T limit[3];
     for (int d = 0; d < 3; ++d) limit[d] = T(g.nodes[d] - ShapeT::kSupport + 1);
     const std::size_t stride_y = std::size_t(blocks[2]), stride_x = std::size_t(blocks[1]) * stride_y;
+    const T* const x[3] = {pv.x[0], pv.x[1], pv.x[2]};
     for (std::size_t m = 0; m < materials.size(); ++m) {
       if (materials[m].end == materials[m].begin) continue;
-      const std::size_t begin = materials[m].begin;
+      const std::size_t begin = materials[m].begin, n = materials[m].end - begin;
       const std::size_t key0 = material_count_++ * block_count_;
+      // The keys in 32-bit arithmetic with no branch, and whether any particle is outside, ORed: a
+      // loop the compiler vectorises across particles (issue 15). An axis outside adds block 0
+      // along it, the key of some block of the grid, which only a grid preview sorts.
+      const std::uint64_t any_outside = backend.parallel_reduce(
+          "bin.keys", n, std::uint64_t(0),
+          [=] FIRN_HD_LAMBDA(std::size_t i, std::uint64_t& acc) {
+            const std::size_t p = begin + i;
+            std::uint32_t key = std::uint32_t(key0), inside = 1;
+            for (int d = 0; d < 3; ++d) {
+              const T s = (x[d][p] - origin[d]) * inv_dx - ShapeT::kOffset;
+              const std::uint32_t in = (s >= T(0)) & (s < limit[d]);  // false for NaN
+              const std::uint32_t b = in ? std::uint32_t(int(s) >> kBlockShift) : 0u;
+              key += b * std::uint32_t(d == 0 ? stride_x : d == 1 ? stride_y : 1);
+              inside &= in;
+            }
+            keys[p] = key;
+            acc |= inside ^ 1u;  // a 64-bit flag, which the 32-bit keys cannot alias
+          },
+          BitOr{});
+      if (!any_outside) continue;
+      // Then the first particle outside, in a run that is about to stop.
       const std::size_t bad = backend.parallel_reduce(
-          "bin.keys", materials[m].end - begin, kNone,
+          "bin.outside", n, kNone,
           [=] FIRN_HD_LAMBDA(std::size_t i, std::size_t& acc) {
             const std::size_t p = begin + i;
-            std::size_t key = key0;
             bool inside = true;
             for (int d = 0; d < 3; ++d) {
-              const T s = (pv.x[d][p] - origin[d]) * inv_dx - ShapeT::kOffset;
-              // Negated comparisons also reject NaN; past the first axis outside, block 0.
+              const T s = (x[d][p] - origin[d]) * inv_dx - ShapeT::kOffset;
               inside = inside && s >= T(0) && s < limit[d];
-              const std::size_t b = inside ? std::size_t(int(s) >> kBlockShift) : 0;
-              key += b * (d == 0 ? stride_x : d == 1 ? stride_y : 1);
             }
-            keys[p] = std::uint32_t(key);
             if (!inside && p < acc) acc = p;
           },
           Min{});

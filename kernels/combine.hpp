@@ -30,4 +30,11 @@ struct Min {
   }
 };
 
+struct BitOr {
+  template <class R>
+  FIRN_HD void operator()(R& a, const R& b) const {
+    a |= b;
+  }
+};
+
 }  // namespace firn

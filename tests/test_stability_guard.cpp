@@ -2,7 +2,9 @@
 // step and a particle leaving the grid, naming step, particle and material.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -88,6 +90,21 @@ TEST(StabilityGuard, CatchesParticleLeavingTheGrid) {
   const std::string msg = c.error_of_next_steps();
   EXPECT_NE(msg.find("left the grid"), std::string::npos) << msg;
   EXPECT_NE(msg.find("particle 3 "), std::string::npos) << msg;
+}
+
+// Of several particles outside (one of them not finite), the binning names the first in memory.
+TEST(StabilityGuard, NamesTheFirstOfSeveralParticlesLeavingTheGrid) {
+  GuardCase c;
+  const std::size_t a = c.find(11), b = c.find(3), d = c.find(20);
+  c.sim.particles().x[0][a] = std::numeric_limits<float>::quiet_NaN();
+  c.sim.particles().x[1][b] = -3.0f;
+  c.sim.particles().x[2][d] = 7.0f;
+  const std::size_t first = std::min({a, b, d});
+  const std::uint32_t id = first == a ? 11 : first == b ? 3 : 20;
+  const std::string msg = c.error_of_next_steps();
+  EXPECT_NE(msg.find("left the grid"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("particle " + std::to_string(id) + " "), std::string::npos) << msg;
+  EXPECT_NE(msg.find("step 0,"), std::string::npos) << msg;
 }
 
 TEST(StabilityGuard, QuietOnAHealthyRun) {
