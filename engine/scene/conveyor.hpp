@@ -45,8 +45,9 @@ class Conveyor {
     const T lo[3] = {T(domain_min_[0]) + margin, T(domain_min_[1]) + margin, T(domain_min_[2]) + margin};
     const T hi[3] = {T(domain_max_[0]) - margin, T(domain_max_[1]) - margin, T(domain_max_[2]) - margin};
     removed_ += long(sim.remove_particles([=] FIRN_HD_LAMBDA(const ParticleView<T>& pv, std::size_t p) {
+      // Bitwise, not short-circuit: no branch, so the count over all particles vectorises.
       bool out = pv.x[0][p] < outflow;
-      for (int d = 0; d < 3; ++d) out = out || pv.x[d][p] < lo[d] || pv.x[d][p] > hi[d];
+      for (int d = 0; d < 3; ++d) out = out | (pv.x[d][p] < lo[d]) | (pv.x[d][p] > hi[d]);
       return out;
     }));
 
