@@ -46,18 +46,23 @@ struct ParticleBlockLists {  // emit
   FIRN_HD void rejected(std::size_t b) const { occupied[b] = 0; }
 };
 
+// Block b is written by the particle blocks b - o, o in {0,1}^3, found as ids b - id(o) with no
+// coordinates (which took three integer divisions per block of the box; issue 15): where a
+// coordinate of b - o would be negative, the id either is negative (x) or, borrowing, lands in the
+// box's last layer along z or y, which holds no particle block (a particle's stencil starts at most
+// at node count - support, blocks[d] = ((nodes - 1) >> kBlockShift) + 2: engine/sparse_grid.hpp).
 struct ActiveBlock {  // classify: 0 for a block some particle block writes, else -1
   const std::uint8_t* occupied;
   BlockBox box;
 
   FIRN_HD int operator()(std::size_t b) const {
-    int c[3];
-    box.coords(b, c);
+    const std::size_t yz = std::size_t(box.count[1]) * box.count[2], z = std::size_t(box.count[2]);
+    int written = 0;
     for (int o = 0; o < 8; ++o) {
-      const int x = c[0] - (o >> 2), y = c[1] - ((o >> 1) & 1), z = c[2] - (o & 1);
-      if (x >= 0 && y >= 0 && z >= 0 && occupied[box.id(x, y, z)]) return 0;
+      const std::size_t offset = (o >> 2) * yz + ((o >> 1) & 1) * z + (o & 1);
+      written |= b >= offset ? occupied[b - offset] : 0;
     }
-    return -1;
+    return written ? 0 : -1;
   }
 };
 

@@ -2,7 +2,12 @@
 // blocks, takes the same steps to the same state, and its grid storage grows only by the block map.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <random>
+#include <vector>
+
 #include "kernels/backend/serial.hpp"
+#include "kernels/block_lists.hpp"
 #include "studies/bench/reference_problems.hpp"
 
 namespace firn {
@@ -45,6 +50,37 @@ TEST(SparseGrid, ActivatesNeighbourBlocksOfEveryParticleBlock) {
   sim.add_particles(m, {{0.47, 0.47, 0.47}}, {0, 0, 0}, 1e-6);
   sim.step();
   EXPECT_EQ(sim.grid().active_count(), 8u);
+}
+
+// ActiveBlock finds the writing particle blocks by id offsets, without coordinates; against the
+// definition (b - o in the box and occupied, o in {0,1}^3) on random occupancy of boxes whose last
+// layers are empty, as a particle binning leaves them, particle blocks on the faces x, y, z = 0
+// included.
+TEST(SparseGrid, ActiveBlocksAreTheNeighboursOfParticleBlocks) {
+  std::mt19937 rng(7);
+  for (const BlockBox box : {BlockBox{{3, 4, 5}}, BlockBox{{6, 2, 3}}, BlockBox{{5, 7, 2}}}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      const std::size_t n = std::size_t(box.count[0]) * box.count[1] * box.count[2];
+      std::vector<std::uint8_t> occupied(n, 0);
+      for (std::size_t b = 0; b < n; ++b) {
+        int c[3];
+        box.coords(std::uint32_t(b), c);
+        const bool last = c[0] == box.count[0] - 1 || c[1] == box.count[1] - 1 || c[2] == box.count[2] - 1;
+        occupied[b] = !last && rng() % 4 == 0;
+      }
+      const ActiveBlock active{occupied.data(), box};
+      for (std::size_t b = 0; b < n; ++b) {
+        int c[3];
+        box.coords(std::uint32_t(b), c);
+        bool written = false;
+        for (int o = 0; o < 8; ++o) {
+          const int x = c[0] - (o >> 2), y = c[1] - ((o >> 1) & 1), z = c[2] - (o & 1);
+          written = written || (x >= 0 && y >= 0 && z >= 0 && occupied[std::size_t(box.id(x, y, z))]);
+        }
+        EXPECT_EQ(active(b), written ? 0 : -1) << "block " << c[0] << " " << c[1] << " " << c[2];
+      }
+    }
+  }
 }
 
 }  // namespace
