@@ -50,6 +50,10 @@ class ParticleBinning {
     for (int d = 0; d < 3; ++d) limit[d] = T(g.nodes[d] - ShapeT::kSupport + 1);
     const std::size_t stride_y = std::size_t(blocks[2]), stride_x = std::size_t(blocks[1]) * stride_y;
     const T* const x[3] = {pv.x[0], pv.x[1], pv.x[2]};
+    // Particle p along axis d in cells from where its stencil starts (its base node is int(s)).
+    const auto cell = [=] FIRN_HD_LAMBDA(std::size_t p, int d) {
+      return (x[d][p] - origin[d]) * inv_dx - ShapeT::kOffset;
+    };
     for (std::size_t m = 0; m < materials.size(); ++m) {
       if (materials[m].end == materials[m].begin) continue;
       const std::size_t begin = materials[m].begin, n = materials[m].end - begin;
@@ -63,7 +67,7 @@ class ParticleBinning {
             const std::size_t p = begin + i;
             std::uint32_t key = std::uint32_t(key0), inside = 1;
             for (int d = 0; d < 3; ++d) {
-              const T s = (x[d][p] - origin[d]) * inv_dx - ShapeT::kOffset;
+              const T s = cell(p, d);
               const std::uint32_t in = (s >= T(0)) & (s < limit[d]);  // false for NaN
               const std::uint32_t b = in ? std::uint32_t(int(s) >> kBlockShift) : 0u;
               key += b * std::uint32_t(d == 0 ? stride_x : d == 1 ? stride_y : 1);
@@ -81,7 +85,7 @@ class ParticleBinning {
             const std::size_t p = begin + i;
             bool inside = true;
             for (int d = 0; d < 3; ++d) {
-              const T s = (x[d][p] - origin[d]) * inv_dx - ShapeT::kOffset;
+              const T s = cell(p, d);
               inside = inside && s >= T(0) && s < limit[d];
             }
             if (!inside && p < acc) acc = p;
