@@ -64,21 +64,6 @@ TEST(MemorySpace, ContainersKeepTheSpaceTheyWereMadeIn) {
   EXPECT_TRUE(live().empty());
 }
 
-// Host buffers of a huge page or more start on a huge-page boundary, so that whole huge pages can
-// back them; smaller ones on a cache line. Each is freed with the alignment it was allocated with.
-TEST(MemorySpace, LargeHostBuffersStartOnAHugePage) {
-  constexpr std::size_t huge = std::size_t(2) << 20;
-  for (const std::size_t floats : {std::size_t(1000), huge / 4 - 1, huge / 4, 3 * huge / 4 + 5}) {
-    AlignedVector<float> column(floats, 1.0f);
-    const auto address = reinterpret_cast<std::uintptr_t>(column.data());
-    EXPECT_EQ(address % 64, 0u) << floats;
-    if (floats * sizeof(float) >= huge) {
-      EXPECT_EQ(address % huge, 0u) << floats;
-    }
-    EXPECT_EQ(column.back(), 1.0f);
-  }
-}
-
 std::uint64_t drop_cube(const backend::MemorySpace& space, bool check_buffers) {
   const backend::UseMemorySpace scope(space);
   SimulationConfig c = cube_drop_config(1);

@@ -10,10 +10,6 @@
 #include <cstddef>
 #include <new>
 
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
-
 namespace firn::backend {
 
 struct MemorySpace {
@@ -23,24 +19,9 @@ struct MemorySpace {
 };
 
 namespace memory_detail {
-constexpr std::size_t kHugePage = std::size_t(2) << 20;
-constexpr std::align_val_t kHostAlignment{64}, kHugePageAlignment{kHugePage};
-// A buffer of a huge page or more starts on a huge-page boundary and asks the kernel for
-// transparent huge pages over its whole huge pages (Linux; where THP is "madvise", the default on
-// Debian, nothing else gets them). A step walks some 40 particle columns at once; with 4 KB pages
-// those streams miss the TLB (issue 15, docs/performance.md "Huge pages"). The advice is a hint:
-// where it fails, the buffer keeps small pages.
-inline void* host_allocate(std::size_t bytes) {
-  if (bytes < kHugePage) return ::operator new(bytes, kHostAlignment);
-  void* p = ::operator new(bytes, kHugePageAlignment);
-#ifdef __linux__
-  madvise(p, bytes / kHugePage * kHugePage, MADV_HUGEPAGE);
-#endif
-  return p;
-}
-inline void host_deallocate(void* p, std::size_t bytes) {
-  ::operator delete(p, bytes < kHugePage ? kHostAlignment : kHugePageAlignment);
-}
+constexpr std::align_val_t kHostAlignment{64};
+inline void* host_allocate(std::size_t bytes) { return ::operator new(bytes, kHostAlignment); }
+inline void host_deallocate(void* p, std::size_t) { ::operator delete(p, kHostAlignment); }
 }  // namespace memory_detail
 
 inline constexpr MemorySpace kHostMemory{"host", memory_detail::host_allocate, memory_detail::host_deallocate};
