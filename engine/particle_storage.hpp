@@ -4,8 +4,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <type_traits>
-#include <utility>
 
 #include "engine/aligned_vector.hpp"
 #include "engine/state_stream.hpp"
@@ -14,13 +12,19 @@
 
 namespace firn {
 
-// out[i] = in[order[i]]: one column of ParticleStorage::gather.
-template <class S>
-struct GatherCopy {
-  S* out;
-  const S* in;
+// out[c][i] = in[c][order[i]] for the first `count` of K columns: a group of columns of
+// ParticleStorage::gather, which reads order[i] once for the group.
+template <class S, int K>
+struct GatherColumns {
+  S* out[K];
+  const S* in[K];
   const std::uint32_t* order;
-  FIRN_HD void operator()(std::size_t i) const { out[i] = in[order[i]]; }
+  int count;
+  FIRN_HD void operator()(std::size_t i) const {
+    const std::uint32_t from = order[i];
+    for (int c = 0; c < K; ++c)
+      if (c < count) out[c][i] = in[c][from];
+  }
 };
 
 template <class T>
@@ -75,12 +79,16 @@ class ParticleStorage {
   // stress before anything reads it (the step's reorder, before the constitutive update).
   template <class Backend>
   void gather(const std::uint32_t* order, std::size_t count, const Backend& backend, bool stress = true) {
+    Columns<T> reals;
+    Columns<std::uint32_t> indices;
 #define FIRN_GATHER(name, n, kind, alloc, doc)                   \
   if (stress || Attribute::name != Attribute::tau)               \
     for (auto& col : name##_)                                    \
-      if (!col.empty()) gather_column(col, order, count, backend);
+      if (!col.empty()) columns_of(reals, indices, col).add(col);
     FIRN_PARTICLE_ATTRIBUTES(FIRN_GATHER)
 #undef FIRN_GATHER
+    gather_columns(reals, spare_real_, order, count, backend);
+    gather_columns(indices, spare_index_, order, count, backend);
     size_ = count;
   }
 
@@ -113,6 +121,10 @@ class ParticleStorage {
   }
 
  private:
+  static constexpr int kGatherGroup = 4;
+#define FIRN_COUNT_COLUMNS(name, n, kind, alloc, doc) +n
+  static constexpr int kMaxColumns = 0 FIRN_PARTICLE_ATTRIBUTES(FIRN_COUNT_COLUMNS);
+#undef FIRN_COUNT_COLUMNS
   static constexpr bool is_always(const char* alloc) { return alloc[0] == 'a'; }
 
   template <class S, std::size_t N>
@@ -124,28 +136,47 @@ class ParticleStorage {
     dst = src[0].empty() ? nullptr : src[0].data();
   }
 
-  // Gathers into the spare column of S's type, then swaps: the spare then holds the old column, for
-  // the next column. No allocation (but when particles were added), so the bytes stay where the
-  // backend put them: a fresh buffer each time would be zeroed by the host and, in device memory,
-  // move to the host and back.
-  template <class S, class Backend>
-  void gather_column(AlignedVector<S>& col, const std::uint32_t* order, std::size_t count, const Backend& backend) {
-    AlignedVector<S>& spare = spare_column<S>();
-    spare.resize(count);
-    backend.parallel_for("particles.gather", count, GatherCopy<S>{spare.data(), col.data(), order});
-    col.swap(spare);
-  }
+  // The enabled columns of one scalar type, in attribute order.
   template <class S>
-  AlignedVector<S>& spare_column() {
-    if constexpr (std::is_same_v<S, T>) return spare_real_;
-    else return spare_index_;
+  struct Columns {
+    AlignedVector<S>* col[kMaxColumns] = {};
+    int n = 0;
+    void add(AlignedVector<S>& c) { col[n++] = &c; }
+  };
+  static Columns<T>& columns_of(Columns<T>& reals, Columns<std::uint32_t>&, AlignedVector<T>&) { return reals; }
+  static Columns<std::uint32_t>& columns_of(Columns<T>&, Columns<std::uint32_t>& indices,
+                                            AlignedVector<std::uint32_t>&) {
+    return indices;
+  }
+
+  // Gathers kGatherGroup columns at a time into the spares of S's type, then swaps: the spares then
+  // hold the old columns, for the next group. One pass per group reads the order once for its
+  // columns (issue 15: a pass per column read it 28 times in the snowball pair's reorders). No
+  // allocation (but when particles were added), so the bytes stay where the backend put them: a
+  // fresh buffer each time would be zeroed by the host and, in device memory, move to the host and
+  // back.
+  template <class S, class Backend>
+  static void gather_columns(const Columns<S>& columns, AlignedVector<S> (&spare)[kGatherGroup],
+                             const std::uint32_t* order, std::size_t count, const Backend& backend) {
+    for (int first = 0; first < columns.n; first += kGatherGroup) {
+      GatherColumns<S, kGatherGroup> copy{};
+      copy.order = order;
+      copy.count = columns.n - first < kGatherGroup ? columns.n - first : kGatherGroup;
+      for (int c = 0; c < copy.count; ++c) {
+        spare[c].resize(count);
+        copy.out[c] = spare[c].data();
+        copy.in[c] = columns.col[first + c]->data();
+      }
+      backend.parallel_for("particles.gather", count, copy);
+      for (int c = 0; c < copy.count; ++c) columns.col[first + c]->swap(spare[c]);
+    }
   }
 
 #define FIRN_STORAGE_MEMBER(name, n, kind, alloc, doc) AlignedVector<FIRN_SCALAR_##kind(T)> name##_[n];
   FIRN_PARTICLE_ATTRIBUTES(FIRN_STORAGE_MEMBER)
 #undef FIRN_STORAGE_MEMBER
-  AlignedVector<T> spare_real_;
-  AlignedVector<std::uint32_t> spare_index_;
+  AlignedVector<T> spare_real_[kGatherGroup];
+  AlignedVector<std::uint32_t> spare_index_[kGatherGroup];
   bool enabled_[int(Attribute::count)] = {};
   std::size_t size_ = 0;
 };
