@@ -46,9 +46,11 @@ FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGe
   // w (m, q + Ad o) with Ad = A dx and q = m vb - Ad f: (m, q) + a col0 + b col1 + c col2, with
   // col_k = (0, Ad column k). A row of the stencil (fixed a, b; c = 0 .. S-1) is S consecutive
   // nodes, so its S x kCount values are computed and added as one short vector (lane l = c kCount
-  // + r, 12 lanes for quadratic APIC): val = (w_a w_b Wz) (P + a L0 + b L1), where Wz, P, L0 and L1
-  // are the per-lane weight along z, (m, q) + c col2, col0 and col1 (FLIP's lanes 4-7 hold the
-  // momentum without the impulse, m v, in P only).
+  // + r, 12 lanes for quadratic APIC): val = (w_b Wz) (w_a (P + a L0) + b w_a L1), where Wz, P, L0
+  // and L1 are the per-lane weight along z, (m, q) + c col2, col0 and col1 (FLIP's lanes 4-7 hold
+  // the momentum without the impulse, m v, in P only). The products by w_b Wz are made once per
+  // particle, those by w_a once per a, and the terms a L0 at a = 0 and b L1 at b = 0 are left out
+  // (issue 15: 24 instructions per particle fewer than (w_a w_b Wz) (P + a L0 + b L1) row by row).
   T Ad[9];
   for (int q = 0; q < 9; ++q) Ad[q] = A[q] * g.dx;
   T u0[4] = {m, T(0), T(0), T(0)}, col[3][4];
@@ -77,15 +79,22 @@ FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGe
       L0[l] = impulse ? col[0][r] : T(0);
       L1[l] = impulse ? col[1][r] : T(0);
     }
-  for (int a = 0; a < S; ++a) {
-    T Pa[L];
+  T Wyz[S][L];  // w_b Wz, row b's weights
+  for (int b = 0; b < S; ++b) {
     FIRN_LANES
-    for (int l = 0; l < L; ++l) Pa[l] = P[l] + T(a) * L0[l];
+    for (int l = 0; l < L; ++l) Wyz[b][l] = w[b][1] * Wz[l];
+  }
+  for (int a = 0; a < S; ++a) {
+    T Ha[L], Ka[L];  // w_a (P + a L0), w_a L1
+    FIRN_LANES
+    for (int l = 0; l < L; ++l) {
+      Ha[l] = w[a][0] * (a > 0 ? P[l] + T(a) * L0[l] : P[l]);
+      Ka[l] = w[a][0] * L1[l];
+    }
     for (int b = 0; b < S; ++b) {
-      const T wab = w[a][0] * w[b][1];
       T val[L];
       FIRN_LANES
-      for (int l = 0; l < L; ++l) val[l] = (wab * Wz[l]) * (Pa[l] + T(b) * L1[l]);
+      for (int l = 0; l < L; ++l) val[l] = Wyz[b][l] * (b > 0 ? Ha[l] + T(b) * Ka[l] : Ha[l]);
       out.template add_row<S>(base[0] + a, base[1] + b, base[2], val);
     }
   }
