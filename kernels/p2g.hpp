@@ -53,16 +53,14 @@ FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGe
   // (issue 15: 24 instructions per particle fewer than (w_a w_b Wz) (P + a L0 + b L1) row by row).
   T Ad[9];
   for (int q = 0; q < 9; ++q) Ad[q] = A[q] * g.dx;
-  T u0[4] = {m, T(0), T(0), T(0)}, col[3][4];
-  for (int r = 0; r < 3; ++r)
-    u0[1 + r] = m * vb[r] - (Ad[3 * r] * f[0] + Ad[3 * r + 1] * f[1] + Ad[3 * r + 2] * f[2]);
+  T col[3][4];
   for (int k = 0; k < 3; ++k) {
     col[k][0] = T(0);
     for (int r = 0; r < 3; ++r) col[k][1 + r] = Ad[3 * r + k];
   }
   constexpr int K = Ch::kCount, L = S * K;
-  const T mv[4] = {T(0), m * v[0], m * v[1], m * v[2]};
-  T Wz[L], P[L], L0[L], L1[L];
+  const T u[4] = {m, m * vb[0], m * vb[1], m * vb[2]}, mv[4] = {T(0), m * v[0], m * v[1], m * v[2]};
+  T Wz[L], P[L], L0[L], L1[L], L2[L];
   // Wz: w_c at lanes c K .. c K + K - 1, by selects, which GCC keeps in registers (issue 15: written
   // to the stack element by element and read back as one vector, it stalled P2G; docs/performance.md).
   FIRN_LANES
@@ -75,10 +73,14 @@ FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGe
     for (int r = 0; r < K; ++r) {
       const int l = c * K + r;
       const bool impulse = r < 4;  // FLIP's lanes 4-7: pad and m v
-      P[l] = impulse ? u0[r] + T(c) * col[2][r] : mv[r & 3];
       L0[l] = impulse ? col[0][r] : T(0);
       L1[l] = impulse ? col[1][r] : T(0);
+      L2[l] = impulse ? col[2][r] : T(0);
+      P[l] = impulse ? u[r] : mv[r & 3];
     }
+  // P = (m, m vb) - Ad f + c col2 = (m, m vb) - f_0 L0 - f_1 L1 + (c - f_2) L2.
+  FIRN_LANES
+  for (int l = 0; l < L; ++l) P[l] += (T(l / K) - f[2]) * L2[l] - f[0] * L0[l] - f[1] * L1[l];
   T Wyz[S][L];  // w_b Wz, row b's weights
   for (int b = 0; b < S; ++b) {
     FIRN_LANES
