@@ -79,12 +79,12 @@ class ParticleStorage {
   // stress before anything reads it (the step's reorder, before the constitutive update).
   template <class Backend>
   void gather(const std::uint32_t* order, std::size_t count, const Backend& backend, bool stress = true) {
-    Columns<T> reals;
-    Columns<std::uint32_t> indices;
+    GatherList<T> reals;
+    GatherList<std::uint32_t> indices;
 #define FIRN_GATHER(name, n, kind, alloc, doc)                   \
   if (stress || Attribute::name != Attribute::tau)               \
     for (auto& col : name##_)                                    \
-      if (!col.empty()) columns_of(reals, indices, col).add(col);
+      if (!col.empty()) list_of(reals, indices, col).add(col);
     FIRN_PARTICLE_ATTRIBUTES(FIRN_GATHER)
 #undef FIRN_GATHER
     gather_columns(reals, spare_real_, order, count, backend);
@@ -136,15 +136,15 @@ class ParticleStorage {
     dst = src[0].empty() ? nullptr : src[0].data();
   }
 
-  // The enabled columns of one scalar type, in attribute order.
+  // The enabled columns of one scalar type, in attribute order, for gather_columns.
   template <class S>
-  struct Columns {
+  struct GatherList {
     AlignedVector<S>* col[kMaxColumns] = {};
     int n = 0;
     void add(AlignedVector<S>& c) { col[n++] = &c; }
   };
-  static Columns<T>& columns_of(Columns<T>& reals, Columns<std::uint32_t>&, AlignedVector<T>&) { return reals; }
-  static Columns<std::uint32_t>& columns_of(Columns<T>&, Columns<std::uint32_t>& indices,
+  static GatherList<T>& list_of(GatherList<T>& reals, GatherList<std::uint32_t>&, AlignedVector<T>&) { return reals; }
+  static GatherList<std::uint32_t>& list_of(GatherList<T>&, GatherList<std::uint32_t>& indices,
                                             AlignedVector<std::uint32_t>&) {
     return indices;
   }
@@ -156,7 +156,7 @@ class ParticleStorage {
   // fresh buffer each time would be zeroed by the host and, in device memory, move to the host and
   // back.
   template <class S, class Backend>
-  static void gather_columns(const Columns<S>& columns, AlignedVector<S> (&spare)[kGatherGroup],
+  static void gather_columns(const GatherList<S>& columns, AlignedVector<S> (&spare)[kGatherGroup],
                              const std::uint32_t* order, std::size_t count, const Backend& backend) {
     for (int first = 0; first < columns.n; first += kGatherGroup) {
       GatherColumns<S, kGatherGroup> copy{};

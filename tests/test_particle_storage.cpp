@@ -69,5 +69,29 @@ TEST(ParticleStorage, GatherMovesEveryColumnByTheOrderAndDropsTheRest) {
   }
 }
 
+// The spares a gather leaves behind are reused by the next one, grown where the store has grown,
+// and the index columns (the ids and the loads) are gathered as a group of their own.
+TEST(ParticleStorage, RepeatedGathersOfAGrownStoreMoveEveryColumn) {
+  ParticleStorage<float> storage;
+  storage.resize(4);
+  storage.enable(Attribute::load);
+  storage.gather(std::vector<std::uint32_t>{3, 2, 1, 0}.data(), 4, backend::Serial{});
+  storage.resize(12);  // more particles than the spares hold
+  const int reals = fill(storage);
+  ASSERT_EQ(reals, 23);  // x, v, F, tau, mass, vol0: six groups of four, the last of three
+  const ParticleView<float> before = storage.view();
+  for (std::size_t p = 0; p < before.n; ++p) before.load[p] = std::uint32_t(100 + p);
+  const std::vector<std::uint32_t> order = {11, 5, 0, 8, 8, 2, 10};
+  storage.gather(order.data(), order.size(), backend::Serial{});
+  const ParticleView<float> v = storage.view();
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    EXPECT_EQ(v.x[0][i], tag(0, order[i]));
+    EXPECT_EQ(v.F[8][i], tag(6 + 8, order[i]));
+    EXPECT_EQ(v.vol0[i], tag(reals - 1, order[i]));
+    EXPECT_EQ(v.id[i], 7 + order[i]);
+    EXPECT_EQ(v.load[i], 100 + order[i]);
+  }
+}
+
 }  // namespace
 }  // namespace firn
