@@ -231,10 +231,47 @@ FIRN_HD bool any_pooled(std::uint32_t near, const GridUpdateParams<T>& p) {
   return false;
 }
 
+// Whether a node of the block lies in a domain wall's band (apply_walls' test over the block's nodes).
+template <class T>
+FIRN_HD bool block_in_wall_band(const int block[3], const GridUpdateParams<T>& p) {
+  for (int d = 0; d < 3; ++d) {
+    const int first = block[d] * kBlockSize, last = first + kBlockSize - 1;
+    if (first < p.walls[2 * d].width || last > p.nodes[d] - 1 - p.walls[2 * d + 1].width) return true;
+  }
+  return false;
+}
+
+// A block no collider or wall reaches, with no energy budget and APIC or PIC channels: start_node and
+// apply_damping's operations node by node, in one loop over the block's nodes that vectorises (issue
+// 15: the node-by-node path took 84 instructions per node on cube_drop, where most blocks are free).
+template <class T, Transfer kTransfer>
+FIRN_HD void free_block_update(T* data, const GridUpdateParams<T>& p) {
+  using Ch = GridChannels<kTransfer>;
+  const T* mass = data + Ch::kMass * kBlockNodes;
+  T* vel = data + Ch::kVelocity * kBlockNodes;
+  const T kick[3] = {p.dt * p.gravity[0], p.dt * p.gravity[1], p.dt * p.gravity[2]};
+  const bool damped = p.damping_factor != T(1);
+  FIRN_LANES
+  for (int l = 0; l < kBlockNodes; ++l) {
+    const bool filled = mass[l] > p.min_mass;
+    const T inv_m = T(1) / mass[l];  // not finite for an empty node, whose velocity is set to 0
+    for (int d = 0; d < 3; ++d) {
+      T v = vel[d * kBlockNodes + l] * inv_m + kick[d];
+      if (damped) v *= p.damping_factor;
+      vel[d * kBlockNodes + l] = filled ? v : T(0);
+    }
+  }
+}
+
 template <class T, Transfer kTransfer>
 FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, const GridUpdateParams<T>& p) {
   using Ch = GridChannels<kTransfer>;
   const std::uint32_t near = colliders_near_block(block, p);
+  if (near == 0 && p.work == nullptr && kTransfer != Transfer::flip && !block_in_wall_band(block, p)) {
+    free_block_update<T, kTransfer>(data, p);
+    BlockReactions<T>{}.write(slot, p);  // this block's sums are zero
+    return;
+  }
   const bool pooled = near != 0 && any_pooled(near, p);  // walls first, and last (see the header)
   const T* moments = pooled ? p.moments.slot_data(slot) : nullptr;
   BlockReactions<T> sums;
