@@ -244,6 +244,9 @@ FIRN_HD bool block_in_wall_band(const int block[3], const GridUpdateParams<T>& p
 // A block no collider or wall reaches, with no energy budget and APIC or PIC channels: start_node and
 // apply_damping's operations node by node, in one loop over the block's nodes that vectorises (issue
 // 15: the node-by-node path took 84 instructions per node on cube_drop, where most blocks are free).
+// It spells node_velocity and apply_damping out: called here, their local v[3] and the damping's
+// branch kept GCC 12 from vectorising the loop ("no vectype", "control flow in loop"), and
+// tests/test_grid_update.cpp holds the two paths to the same bits.
 template <class T, Transfer kTransfer>
 FIRN_HD void free_block_update(T* data, const GridUpdateParams<T>& p) {
   using Ch = GridChannels<kTransfer>;
