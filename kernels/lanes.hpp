@@ -137,6 +137,18 @@ FIRN_HD bool any(const LaneMask<W>& a) {
   return r != 0;
 }
 
+// dst[l] = a.v[l] for l < count: one vector store where count is W (a loop to count alone became a
+// call to memcpy per column; issue 15).
+template <class T, int W>
+FIRN_HD void store_lanes(T* dst, const Lanes<T, W>& a, int count) {
+  if (count == W) {
+    FIRN_LANES
+    for (int l = 0; l < W; ++l) dst[l] = a.v[l];
+  } else {
+    for (int l = 0; l < count; ++l) dst[l] = a.v[l];
+  }
+}
+
 // mask ? a : b, lane by lane.
 template <class T, int W>
 FIRN_HD Lanes<T, W> select(const LaneMask<W>& mask, const Lanes<T, W>& a, const Lanes<T, W>& b) {

@@ -135,36 +135,36 @@ struct ConstitutiveUpdateLanes {
     // did not yield, or that the lane form handed back, holds the values it read); where none did,
     // nothing changed and nothing is stored, which spares the columns' write-back. Then the stress.
     if (Model::kPlastic && any(plastic)) {
-      for (int q = 0; q < 9; ++q) {
-        FIRN_LANES
-        for (int l = 0; l < count; ++l) pv.F[q][first + l] = F.m[q].v[l];
-      }
-      FIRN_LANES
-      for (int l = 0; l < count; ++l) state[first + l] = s.v[l];
+      for (int q = 0; q < 9; ++q) store_lanes(pv.F[q] + first, F.m[q], count);
+      store_lanes(state + first, s, count);
     }
-    for (int c = 0; c < 6; ++c) {
-      FIRN_LANES
-      for (int l = 0; l < count; ++l) pv.tau[c][first + l] = tau[c].v[l];
-    }
-    const LaneMask<W> finite_stress = finite(tau[0] + tau[1] + tau[2] + tau[3] + tau[4] + tau[5]);
-    // The lanes the lane form returned, summed in locals in lane order, which stay in registers: no
-    // call in the loop, so nothing goes to memory and back (with the scalar update called inside
-    // it, the plastic work's sum did at every lane: 18% of the snowball's update on AVX2). Then the
-    // lanes handed back, in lane order, each by the scalar update from the F and state stored
-    // above: the values it read.
-    std::size_t first_bad = acc.first_bad;
-    double max_modulus = acc.max_modulus, plastic_work = acc.plastic_work;
-    for (int l = 0; l < count; ++l) {
-      if (!ok.m[l]) continue;
-      const std::size_t p = first + l;
-      if (one.plastic_work && plastic.m[l]) plastic_work += double(pv.vol0[p]) * double(work.v[l]);
-      if (!finite_stress.m[l] && p < first_bad) first_bad = p;
+    for (int c = 0; c < 6; ++c) store_lanes(pv.tau[c] + first, tau[c], count);
+    // The summary of the lanes the lane form returned (`counted`), in registers: the plastic work
+    // summed in lane order and the first non-finite stress, each by a loop over the lanes only where
+    // a lane has one, and the largest modulus as a float maximum (its double is the maximum of the
+    // lanes' doubles). Then the lanes handed back, in lane order, each by the scalar update from the
+    // F and state stored above: the values it read. (issue 15: a loop over every lane for all three
+    // took a quarter of neo-Hookean's update.)
+    LaneMask<W> counted;
+    for (int l = 0; l < W; ++l) counted.m[l] = ok.m[l] & int(l < count);
+    ConstitutiveSummary sum = acc;
+    if (one.plastic_work && any(plastic && counted))
+      for (int l = 0; l < count; ++l)
+        if (counted.m[l] && plastic.m[l]) sum.plastic_work += double(pv.vol0[first + l]) * double(work.v[l]);
+    const LaneMask<W> bad = counted && !finite(tau[0] + tau[1] + tau[2] + tau[3] + tau[4] + tau[5]);
+    if (any(bad))
+      for (int l = 0; l < count; ++l)
+        if (bad.m[l]) sum.first_bad = std::min(sum.first_bad, first + l);
+    T top = T(0);
+    for (int l = 0; l < W; ++l) {
       const PlasticState<T> after = Model::kUsesAlpha ? PlasticState<T>{s.v[l], T(1)}
                                     : Model::kUsesJp  ? PlasticState<T>{T(0), s.v[l]}
                                                       : PlasticState<T>{};
-      max_modulus = std::max(max_modulus, double(one.model.p_wave_modulus(after)));
+      const T modulus = one.model.p_wave_modulus(after);
+      top = counted.m[l] && top < modulus ? modulus : top;
     }
-    acc = {first_bad, max_modulus, plastic_work};
+    sum.max_modulus = std::max(sum.max_modulus, double(top));
+    acc = sum;
     for (int l = 0; l < count; ++l)
       if (!ok.m[l]) one(first + l - one.begin, acc);
   }
