@@ -26,6 +26,12 @@ struct GuardSummary {
   FIRN_HD void add(std::size_t p, T speed_p, T J_p, T moved_p, T cell) {
     if (speed_p > max_speed) max_speed = speed_p;
     if (J_p < min_J) min_J = J_p;
+    // The common case first, in a few instructions (issue 15): a finite sum means all three are
+    // finite (an infinity or a NaN among them makes it infinite or NaN), so with J > 0 and the move
+    // under a cell there is nothing to report. Anything else, an overflowing sum included, is
+    // classified below.
+    const T sum = speed_p + J_p + moved_p;
+    if (sum - sum == T(0) && J_p > T(0) && moved_p <= cell) return;
     GuardReason r = GuardReason::none;
     if (!std::isfinite(speed_p) || !std::isfinite(J_p) || !std::isfinite(moved_p))
       r = GuardReason::not_finite;

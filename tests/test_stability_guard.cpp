@@ -10,6 +10,7 @@
 
 #include "engine/simulation.hpp"
 #include "kernels/backend/serial.hpp"
+#include "kernels/guard_summary.hpp"
 
 namespace firn {
 namespace {
@@ -110,6 +111,42 @@ TEST(StabilityGuard, NamesTheFirstOfSeveralParticlesLeavingTheGrid) {
 TEST(StabilityGuard, QuietOnAHealthyRun) {
   GuardCase c;
   EXPECT_EQ(c.error_of_next_steps(), "");
+}
+
+// GuardSummary::add classifies one particle's check: every reason, its boundaries (J = 0 is
+// inverted, a move of exactly a cell is not too fast), a sum of finite values that overflows, and
+// the lowest offender winning in either order of arrival.
+TEST(GuardSummary, ClassifiesEachCheck) {
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  const float big = std::numeric_limits<float>::max(), cell = 0.01f;
+  struct Case {
+    float speed, J, moved;
+    GuardReason reason;
+  };
+  const Case cases[] = {
+      {1.0f, 1.0f, 0.005f, GuardReason::none},       {1.0f, 1.0f, cell, GuardReason::none},
+      {1.0f, 1.0f, 0.0101f, GuardReason::too_fast},  {1.0f, 0.0f, 0.005f, GuardReason::inverted},
+      {1.0f, -0.5f, 0.005f, GuardReason::inverted},  {nan, 1.0f, 0.005f, GuardReason::not_finite},
+      {inf, 1.0f, 0.005f, GuardReason::not_finite},  {1.0f, -inf, 0.005f, GuardReason::not_finite},
+      {1.0f, nan, 0.005f, GuardReason::not_finite},  {1.0f, 1.0f, inf, GuardReason::not_finite},
+      {big, 1.0f, big, GuardReason::too_fast},       {big, big, 0.005f, GuardReason::none},
+  };
+  for (const Case& k : cases) {
+    GuardSummary<float> g;
+    g.add(7, k.speed, k.J, k.moved, cell);
+    EXPECT_EQ(g.reason, k.reason) << k.speed << " " << k.J << " " << k.moved;
+    EXPECT_EQ(g.offender, k.reason == GuardReason::none ? kNoParticle : std::size_t(7));
+  }
+  GuardSummary<float> a, b;
+  a.add(9, 1.0f, -1.0f, 0.0f, cell);
+  a.add(4, 1.0f, 1.0f, 0.5f, cell);
+  b.add(4, 1.0f, 1.0f, 0.5f, cell);
+  b.add(9, 1.0f, -1.0f, 0.0f, cell);
+  for (const GuardSummary<float>& g : {a, b}) {
+    EXPECT_EQ(g.offender, 4u);
+    EXPECT_EQ(g.reason, GuardReason::too_fast);
+    EXPECT_EQ(g.min_J, -1.0f);
+  }
 }
 
 }  // namespace
