@@ -1,11 +1,9 @@
 // Owns the particle arrays: one aligned column per scalar component of every attribute in
-// FIRN_PARTICLE_ATTRIBUTES, or one array of records for a `record` attribute. Attributes marked
-// on_demand are allocated only when enabled.
+// FIRN_PARTICLE_ATTRIBUTES. Attributes marked on_demand are allocated only when enabled.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
-#include <type_traits>
 
 #include "engine/aligned_vector.hpp"
 #include "engine/state_stream.hpp"
@@ -29,23 +27,11 @@ struct GatherColumns {
   }
 };
 
-// out[W i .. W i + W - 1] = in[W order[i] ..]: an array of W-value records, reordered.
-template <class S, int W>
-struct GatherRecords {
-  S* out;
-  const S* in;
-  const std::uint32_t* order;
-  FIRN_HD void operator()(std::size_t i) const {
-    const S* from = in + std::size_t(order[i]) * W;
-    for (int c = 0; c < W; ++c) out[i * W + c] = from[c];
-  }
-};
-
 template <class T>
 class ParticleStorage {
  public:
   ParticleStorage() {
-#define FIRN_ENABLE_ALWAYS(name, n, kind, alloc, layout, doc) enabled_[int(Attribute::name)] = is_always(#alloc);
+#define FIRN_ENABLE_ALWAYS(name, n, kind, alloc, doc) enabled_[int(Attribute::name)] = is_always(#alloc);
     FIRN_PARTICLE_ATTRIBUTES(FIRN_ENABLE_ALWAYS)
 #undef FIRN_ENABLE_ALWAYS
   }
@@ -53,10 +39,10 @@ class ParticleStorage {
   std::size_t size() const { return size_; }
   bool has(Attribute a) const { return enabled_[int(a)]; }
 
-  // Bytes of every enabled attribute for one particle.
+  // Bytes of every enabled column for one particle.
   std::size_t bytes_per_particle() const {
     std::size_t bytes = 0;
-#define FIRN_COLUMN_BYTES(name, n, kind, alloc, layout, doc) \
+#define FIRN_COLUMN_BYTES(name, n, kind, alloc, doc) \
   bytes += has(Attribute::name) ? n * sizeof(FIRN_SCALAR_##kind(T)) : 0;
     FIRN_PARTICLE_ATTRIBUTES(FIRN_COLUMN_BYTES)
 #undef FIRN_COLUMN_BYTES
@@ -69,10 +55,10 @@ class ParticleStorage {
     resize(size_);
   }
 
-  // Resizes every enabled array to n particles; new entries are zero.
+  // Resizes every enabled column; new entries are zero.
   void resize(std::size_t n) {
-#define FIRN_RESIZE(name, n_, kind, alloc, layout, doc) \
-  for (auto& col : name##_) col.resize(has(Attribute::name) ? n * FIRN_WIDTH_##layout(n_) : 0);
+#define FIRN_RESIZE(name, n_, kind, alloc, doc) \
+  for (auto& col : name##_) col.resize(has(Attribute::name) ? n : 0);
     FIRN_PARTICLE_ATTRIBUTES(FIRN_RESIZE)
 #undef FIRN_RESIZE
     size_ = n;
@@ -80,14 +66,14 @@ class ParticleStorage {
 
   ParticleView<T> view() {
     ParticleView<T> v;
-#define FIRN_FILL_VIEW(name, n, kind, alloc, layout, doc) assign(v.name, name##_);
+#define FIRN_FILL_VIEW(name, n, kind, alloc, doc) assign(v.name, name##_);
     FIRN_PARTICLE_ATTRIBUTES(FIRN_FILL_VIEW)
 #undef FIRN_FILL_VIEW
     v.n = size_;
     return v;
   }
 
-  // Reorders and/or drops particles in every enabled attribute: new[i] = old[order[i]] for
+  // Reorders and/or drops particles in every enabled column: new[i] = old[order[i]] for
   // i < count (count <= size), using the backend for the copies. With `stress` false the stress
   // columns tau are left as they are, out of order: for a caller that recomputes every particle's
   // stress before anything reads it (the step's reorder, before the constitutive update).
@@ -95,13 +81,10 @@ class ParticleStorage {
   void gather(const std::uint32_t* order, std::size_t count, const Backend& backend, bool stress = true) {
     GatherList<T> reals;
     GatherList<std::uint32_t> indices;
-#define FIRN_GATHER(name, n, kind, alloc, layout, doc)                                          \
-  if (stress || Attribute::name != Attribute::tau)                                              \
-    for (auto& col : name##_)                                                                   \
-      if (!col.empty()) {                                                                       \
-        if constexpr (FIRN_WIDTH_##layout(n) == 1) list_of(reals, indices, col).add(col);       \
-        else gather_records<FIRN_WIDTH_##layout(n)>(col, order, count, backend);                \
-      }
+#define FIRN_GATHER(name, n, kind, alloc, doc)                   \
+  if (stress || Attribute::name != Attribute::tau)               \
+    for (auto& col : name##_)                                    \
+      if (!col.empty()) list_of(reals, indices, col).add(col);
     FIRN_PARTICLE_ATTRIBUTES(FIRN_GATHER)
 #undef FIRN_GATHER
     gather_columns(reals, spare_real_, order, count, backend);
@@ -113,7 +96,7 @@ class ParticleStorage {
   // checkpoint; load() takes them back (the same attribute list and precision) and refuses others.
   void save(StateWriter& out) const {
     out.value(std::uint64_t(size_));
-#define FIRN_SAVE_COLUMNS(name, n, kind, alloc, layout, doc)                                 \
+#define FIRN_SAVE_COLUMNS(name, n, kind, alloc, doc)                                 \
   out.text(#name);                                                                   \
   out.value(std::uint8_t(has(Attribute::name)));                                     \
   if (has(Attribute::name))                                                          \
@@ -123,13 +106,13 @@ class ParticleStorage {
   }
   void load(StateReader& in) {
     const std::size_t count = std::size_t(in.value<std::uint64_t>());
-#define FIRN_LOAD_COLUMNS(name, n, kind, alloc, layout, doc)                                         \
+#define FIRN_LOAD_COLUMNS(name, n, kind, alloc, doc)                                               \
   StateReader::expect(in.text() == #name, "checkpoint's particle attributes differ from this firn's"); \
   enabled_[int(Attribute::name)] = in.value<std::uint8_t>() != 0;                                  \
   for (auto& col : name##_) {                                                                      \
     col.clear();                                                                                   \
     if (has(Attribute::name)) in.array(col);                                                       \
-    StateReader::expect(col.size() == (has(Attribute::name) ? count * FIRN_WIDTH_##layout(n) : 0), \
+    StateReader::expect(col.size() == (has(Attribute::name) ? count : 0),                          \
                         "checkpoint's particle column " #name " has the wrong length");            \
   }
     FIRN_PARTICLE_ATTRIBUTES(FIRN_LOAD_COLUMNS)
@@ -139,7 +122,7 @@ class ParticleStorage {
 
  private:
   static constexpr int kGatherGroup = 4;
-#define FIRN_COUNT_COLUMNS(name, n, kind, alloc, layout, doc) +FIRN_ARRAYS_##layout(n)
+#define FIRN_COUNT_COLUMNS(name, n, kind, alloc, doc) +n
   static constexpr int kMaxColumns = 0 FIRN_PARTICLE_ATTRIBUTES(FIRN_COUNT_COLUMNS);
 #undef FIRN_COUNT_COLUMNS
   static constexpr bool is_always(const char* alloc) { return alloc[0] == 'a'; }
@@ -189,23 +172,11 @@ class ParticleStorage {
     }
   }
 
-  // A record array, through spare_record_ likewise.
-  template <int W, class S, class Backend>
-  void gather_records(AlignedVector<S>& records, const std::uint32_t* order, std::size_t count,
-                      const Backend& backend) {
-    static_assert(std::is_same_v<S, T>, "records hold reals");
-    spare_record_.resize(count * W);
-    backend.parallel_for("particles.gather", count, GatherRecords<S, W>{spare_record_.data(), records.data(), order});
-    records.swap(spare_record_);
-  }
-
-#define FIRN_STORAGE_MEMBER(name, n, kind, alloc, layout, doc) \
-  AlignedVector<FIRN_SCALAR_##kind(T)> name##_[FIRN_ARRAYS_##layout(n)];
+#define FIRN_STORAGE_MEMBER(name, n, kind, alloc, doc) AlignedVector<FIRN_SCALAR_##kind(T)> name##_[n];
   FIRN_PARTICLE_ATTRIBUTES(FIRN_STORAGE_MEMBER)
 #undef FIRN_STORAGE_MEMBER
   AlignedVector<T> spare_real_[kGatherGroup];
   AlignedVector<std::uint32_t> spare_index_[kGatherGroup];
-  AlignedVector<T> spare_record_;
   bool enabled_[int(Attribute::count)] = {};
   std::size_t size_ = 0;
 };

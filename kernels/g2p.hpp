@@ -3,8 +3,8 @@
 //   F <- (I + dt C) F,     x <- x + dt v_pic                     (Hu et al. 2018, Eq. 17)
 //   v_p = v_pic (APIC, PIC) or alpha (v_p + v_pic - v_old) + (1 - alpha) v_pic (FLIP),
 // where v_old = sum w_ip v_i_old. Reads grid velocities from Source::row(i, j, k): the nodes
-// (i, j, k .. k + S - 1) one after another, GridChannels::kGatherCount values each from the
-// mass channel on (mass and velocity, then for FLIP a pad and the old velocity).
+// (i, j, k .. k + S - 1) one after another, GridChannels::kGatherCount values each (velocity and a
+// zero pad, then for FLIP the old velocity and a pad).
 // Returns what the stability guard needs: the new speed, J = det F and the distance moved.
 #pragma once
 
@@ -37,11 +37,11 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
   const auto& w = st.w;
 
   // Accumulate sum w v_i and its first moments sum w v_i o_k (o the node offset). A row of the
-  // stencil (fixed a, b; c = 0 .. S-1) is S consecutive nodes of K values (mass and velocity, then
-  // for FLIP a pad and the old velocity), read as one short vector of lanes l = c K + r. Sums
+  // stencil (fixed a, b; c = 0 .. S-1) is S consecutive nodes of K values (velocity and a zero pad,
+  // then for FLIP the old velocity and a pad), read as one short vector of lanes l = c K + r. Sums
   // over b first (weights w_b and b w_b), then over a; the lanes are folded over c at the end, where
   // they take their weight along z, w_c, and the z moment its factor c. The loop over a is unrolled
-  // (GCC kept it a loop, its weights spilled and reloaded each time: 51 instructions per particle
+  // (GCC kept it a loop, its weights spilled and reloaded each time: about 50 instructions per particle
   // more; issue 15); P2G's, unrolled likewise, ran slower and is not.
   constexpr int K = GridChannels<kTransfer>::kGatherCount, L = S * K;
   T s0[L] = {}, sa[L] = {}, sb[L] = {};
@@ -69,12 +69,10 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
       for (int l = 0; l < L; ++l) sa[l] += waa * t0[l];
     }
   }
-  // Fold the lanes over c, a node's channel r at a time (lane c K + r), into vectors over r
-  // (velocity component r - 1 at r = 1 .. 3; r = 0 sums the mass, which nothing reads): v_pic, the
-  // moments mo[k] = sum w v o_k and, for FLIP, the old velocity. In that form the rest is column
-  // arithmetic on 4-lane vectors: column k of C is cs (mo[k] - v_pic f_k), and column j of
-  // F_new = (I + dt C) F is sum_k (I + dt C)_k F(k, j). The lanes r = 1 .. 3 are C's record
-  // (kernels/particle_attributes.hpp), stored with lane 0 zeroed.
+  // Fold the lanes over c, a node's channel r at a time (lane c K + r), into vectors over r (the
+  // velocity component; r = 3 is the pad): v_pic, the moments mo[k] = sum w v o_k and, for FLIP,
+  // the old velocity. In that form the rest is column arithmetic on 4-lane vectors: column k of C
+  // is cs (mo[k] - v_pic f_k), and column j of F_new = (I + dt C) F is sum_k (I + dt C)_k F(k, j).
   T vp[4], mo[3][4], vold[4];
   FIRN_LANES
   for (int r = 0; r < 4; ++r) {
@@ -101,7 +99,7 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
     FIRN_LANES
     for (int r = 0; r < 4; ++r) {
       Ccol[k][r] = cs * (mo[k][r] - vp[r] * f[k]);
-      Gcol[k][r] = dt * Ccol[k][r] + (r == k + 1 ? T(1) : T(0));
+      Gcol[k][r] = dt * Ccol[k][r] + (r == k ? T(1) : T(0));
     }
   }
   for (int j = 0; j < 3; ++j) {
@@ -111,29 +109,22 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
   }
   Mat3<T> Fn;
   for (int r = 0; r < 3; ++r)
-    for (int j = 0; j < 3; ++j) Fn(r, j) = Fcol[j][r + 1];
+    for (int j = 0; j < 3; ++j) Fn(r, j) = Fcol[j][r];
 
-  T vn[3], vpic[3];
+  T vn[3];
+  for (int r = 0; r < 3; ++r)
+    vn[r] = kTransfer == Transfer::flip ? flip_alpha * (pv.v[r][p] + vp[r] - vold[r]) + (T(1) - flip_alpha) * vp[r]
+                                        : vp[r];
   for (int r = 0; r < 3; ++r) {
-    vpic[r] = vp[r + 1];
-    vn[r] = kTransfer == Transfer::flip
-                ? flip_alpha * (pv.v[r][p] + vpic[r] - vold[r + 1]) + (T(1) - flip_alpha) * vpic[r]
-                : vpic[r];
-  }
-  for (int r = 0; r < 3; ++r) {
-    pv.x[r][p] += dt * vpic[r];
+    pv.x[r][p] += dt * vp[r];
     pv.v[r][p] = vn[r];
   }
   for (int q = 0; q < 9; ++q) pv.F[q][p] = Fn.m[q];
-  if constexpr (kTransfer == Transfer::apic) {  // PIC and FLIP need C for F only: not stored
-    T* const record = pv.C + std::size_t(12) * p;
-    for (int k = 0; k < 3; ++k) {
-      FIRN_LANES
-      for (int r = 0; r < 4; ++r) record[4 * k + r] = r == 0 ? T(0) : Ccol[k][r];
-    }
-  }
+  if constexpr (kTransfer == Transfer::apic)  // PIC and FLIP need C for F only: not stored
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) pv.C[3 * r + k][p] = Ccol[k][r];
   return ParticleCheck<T>{std::sqrt(vn[0] * vn[0] + vn[1] * vn[1] + vn[2] * vn[2]), determinant(Fn),
-                          dt * std::sqrt(vpic[0] * vpic[0] + vpic[1] * vpic[1] + vpic[2] * vpic[2])};
+                          dt * std::sqrt(vp[0] * vp[0] + vp[1] * vp[1] + vp[2] * vp[2])};
 }
 
 }  // namespace firn

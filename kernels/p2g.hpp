@@ -35,30 +35,28 @@ FIRN_HD void p2g_particle(const ParticleView<T>& pv, std::size_t p, const GridGe
     for (int r = 0; r < 3; ++r) vb[r] += dt * pv.body_accel[r][p];
 
   // A = -dt V0 D^-1 tau (+ m C for APIC), D^-1 = kDinv / dx^2.
-  //
+  const T s = -dt * pv.vol0[p] * ShapeT::kDinv * g.inv_dx * g.inv_dx;
+  T A[9] = {s * pv.tau[0][p], s * pv.tau[3][p], s * pv.tau[5][p],   //
+            s * pv.tau[3][p], s * pv.tau[1][p], s * pv.tau[4][p],   //
+            s * pv.tau[5][p], s * pv.tau[4][p], s * pv.tau[2][p]};
+  if (kTransfer == Transfer::apic)
+    for (int q = 0; q < 9; ++q) A[q] += m * pv.C[q][p];
+
   // With node offset o = (a, b, c) from base, x_i - x_p = (o - f) dx, so the node receives
   // w (m, q + Ad o) with Ad = A dx and q = m vb - Ad f: (m, q) + a col0 + b col1 + c col2, with
-  // col_k = (0, Ad column k), built as 4-lane vectors: C's record holds C's columns in these lanes
-  // (kernels/particle_attributes.hpp), read as three vectors. A row of the stencil (fixed a, b;
-  // c = 0 .. S-1) is S consecutive nodes, so its S x kCount values are computed and added as one
-  // short vector (lane l = c kCount + r, 12 lanes for quadratic APIC): val = (w_b Wz) (w_a (P + a
-  // L0) + b w_a L1), where Wz, P, L0 and L1 are the per-lane weight along z, (m, q) + c col2, col0
-  // and col1 (FLIP's lanes 4-7 hold the momentum without the impulse, m v, in P only). The
-  // products by w_b Wz are made once per particle, those by w_a once per a, and the terms a L0 at
-  // a = 0 and b L1 at b = 0 are left out (issue 15: 24 instructions per particle fewer than
-  // (w_a w_b Wz) (P + a L0 + b L1) row by row).
-  const T s = -dt * pv.vol0[p] * ShapeT::kDinv * g.inv_dx * g.inv_dx;
-  const T t[6] = {pv.tau[0][p], pv.tau[1][p], pv.tau[2][p], pv.tau[3][p], pv.tau[4][p], pv.tau[5][p]};
-  const T tcol[3][4] = {{T(0), t[0], t[3], t[5]}, {T(0), t[3], t[1], t[4]}, {T(0), t[5], t[4], t[2]}};
-  const T* const record = kTransfer == Transfer::apic ? pv.C + std::size_t(12) * p : nullptr;
+  // col_k = (0, Ad column k). A row of the stencil (fixed a, b; c = 0 .. S-1) is S consecutive
+  // nodes, so its S x kCount values are computed and added as one short vector (lane l = c kCount
+  // + r, 12 lanes for quadratic APIC): val = (w_b Wz) (w_a (P + a L0) + b w_a L1), where Wz, P, L0
+  // and L1 are the per-lane weight along z, (m, q) + c col2, col0 and col1 (FLIP's lanes 4-7 hold
+  // the momentum without the impulse, m v, in P only). The products by w_b Wz are made once per
+  // particle, those by w_a once per a, and the terms a L0 at a = 0 and b L1 at b = 0 are left out
+  // (issue 15: 24 instructions per particle fewer than (w_a w_b Wz) (P + a L0 + b L1) row by row).
+  T Ad[9];
+  for (int q = 0; q < 9; ++q) Ad[q] = A[q] * g.dx;
   T col[3][4];
   for (int k = 0; k < 3; ++k) {
-    FIRN_LANES
-    for (int r = 0; r < 4; ++r) {
-      T A = s * tcol[k][r];
-      if (kTransfer == Transfer::apic) A += m * record[4 * k + r];
-      col[k][r] = A * g.dx;
-    }
+    col[k][0] = T(0);
+    for (int r = 0; r < 3; ++r) col[k][1 + r] = Ad[3 * r + k];
   }
   constexpr int K = Ch::kCount, L = S * K;
   const T u[4] = {m, m * vb[0], m * vb[1], m * vb[2]}, mv[4] = {T(0), m * v[0], m * v[1], m * v[2]};

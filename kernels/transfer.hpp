@@ -20,11 +20,10 @@ struct GridChannels {
   static constexpr int kVelocity = 1;     // 3 channels: momentum after P2G, velocity after update
   static constexpr int kOldVelocity = 5;  // FLIP only, 3 channels after a pad
   static constexpr int kCount = kTransfer == Transfer::flip ? 8 : 4;
-  // What G2P reads per node, from the mass channel on: mass and velocity (and a pad and the old
-  // velocity for FLIP).
+  // What G2P reads per node: velocity and a zero pad (and the old velocity and a pad for FLIP).
   static constexpr int kGatherCount = kTransfer == Transfer::flip ? 8 : 4;
   // P2G writes lanes 0-3 as (mass, momentum) and lanes 4-7 as (pad, old momentum); G2P reads
-  // velocity from gather lanes 1-3 and old velocity from 5-7, the lanes of C's record.
+  // velocity from gather lanes 0-2 and old velocity from 4-6.
   static_assert(kMass == 0 && kVelocity == 1 && kOldVelocity == 5, "kernels assume this four-lane layout");
 };
 

@@ -30,9 +30,10 @@ void one_particle(ParticleStorage<double>& s) {
     pv.x[d][0] = x[d];
     pv.v[d][0] = v[d];
   }
-  for (int q = 0; q < 9; ++q) pv.F[q][0] = (q % 4 == 0) + 0.01 * q;
-  for (int r = 0; r < 3; ++r)
-    for (int k = 0; k < 3; ++k) pv.C[4 * k + 1 + r] = 0.1 * (3 * r + k - 4);  // C's record
+  for (int q = 0; q < 9; ++q) {
+    pv.F[q][0] = (q % 4 == 0) + 0.01 * q;
+    pv.C[q][0] = 0.1 * (q - 4);
+  }
   for (int c = 0; c < 6; ++c) pv.tau[c][0] = 1e3 * (c + 1);
   pv.mass[0] = 2.5;
   pv.vol0[0] = 1e-3;
@@ -65,13 +66,12 @@ struct AffineField {  // v(x) = a + B x at every node (and old velocity = 0)
   GridGeometry<double> g;
   double a[3] = {0.5, -0.25, 1.0};
   double B[9] = {0.1, -0.2, 0.3, 0.05, 0.4, -0.1, -0.3, 0.2, 0.15};
-  mutable double row_values[4 * 4] = {};  // up to 4 nodes (cubic) of mass and velocity (APIC)
+  mutable double row_values[4 * 4] = {};  // up to 4 nodes (cubic) of velocity and a pad (APIC)
   const double* row(int i, int j, int k) const {
     for (int n = 0; n < 4; ++n) {
       const double x[3] = {i * g.dx, j * g.dx, (k + n) * g.dx};
-      row_values[4 * n] = 7.0;  // a node's mass, which G2P does not read
       for (int r = 0; r < 3; ++r)
-        row_values[4 * n + 1 + r] = a[r] + B[3 * r] * x[0] + B[3 * r + 1] * x[1] + B[3 * r + 2] * x[2];
+        row_values[4 * n + r] = a[r] + B[3 * r] * x[0] + B[3 * r + 1] * x[1] + B[3 * r + 2] * x[2];
     }
     return row_values;
   }
@@ -90,9 +90,8 @@ void check_g2p_affine() {
     const double expected = field.a[r] + field.B[3 * r] * x[0] + field.B[3 * r + 1] * x[1] + field.B[3 * r + 2] * x[2];
     EXPECT_NEAR(pv.v[r][0], expected, 1e-12);
     EXPECT_NEAR(pv.x[r][0], x[r] + dt * expected, 1e-12);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(pv.C[4 * k + 1 + r], field.B[3 * r + k], 1e-11);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(pv.C[3 * r + k][0], field.B[3 * r + k], 1e-11);
   }
-  for (int k = 0; k < 3; ++k) EXPECT_EQ(pv.C[4 * k], 0.0) << "C's record keeps its lane 0 zero";
 }
 
 TEST(G2P, ReproducesAffineFieldQuadratic) { check_g2p_affine<QuadraticBSpline<double>>(); }
@@ -100,9 +99,8 @@ TEST(G2P, ReproducesAffineFieldCubic) { check_g2p_affine<CubicBSpline<double>>()
 
 TEST(G2P, FlipBlend) {
   // Grid velocity uniform u, old grid velocity 0: FLIP gives alpha (v_p + u) + (1 - alpha) u.
-  // Each node: mass, u, a pad and the old velocity.
   struct Uniform {
-    double value[3 * 8] = {5, 1, 2, 3, 0, 0, 0, 0, 5, 1, 2, 3, 0, 0, 0, 0, 5, 1, 2, 3, 0, 0, 0, 0};
+    double value[3 * 8] = {1, 2, 3, 0, 0, 0, 0, 0, 1, 2, 3, 0, 0, 0, 0, 0, 1, 2, 3, 0, 0, 0, 0, 0};
     const double* row(int, int, int) const { return value; }
   } grid;
   ParticleStorage<double> s;
@@ -110,10 +108,7 @@ TEST(G2P, FlipBlend) {
   ParticleView<double> pv = s.view();
   const double v0[3] = {pv.v[0][0], pv.v[1][0], pv.v[2][0]}, alpha = 0.9;
   g2p_particle<double, QuadraticBSpline<double>, Transfer::flip>(pv, 0, unit_grid(), 1e-3, alpha, grid);
-  for (int r = 0; r < 3; ++r) {
-    const double u = grid.value[1 + r];
-    EXPECT_NEAR(pv.v[r][0], alpha * (v0[r] + u) + (1 - alpha) * u, 1e-12);
-  }
+  for (int r = 0; r < 3; ++r) EXPECT_NEAR(pv.v[r][0], alpha * (v0[r] + grid.value[r]) + (1 - alpha) * grid.value[r], 1e-12);
 }
 
 TEST(G2P, DeformationGradientUpdate) {

@@ -14,7 +14,7 @@ namespace firn {
 namespace {
 
 constexpr char kMagic[8] = {'F', 'I', 'R', 'N', 'C', 'K', 'P', 'T'};
-constexpr std::uint32_t kFormat = 3;  // 2: the binning's walk breaks (ParticleBinning::needs_reorder); 3: C as a record
+constexpr std::uint32_t kFormat = 2;  // 2: the binning's walk breaks (ParticleBinning::needs_reorder)
 
 std::string hex(std::uint64_t v) {
   char buf[20];

@@ -26,7 +26,7 @@ namespace firn {
 template <class T, class ShapeT, Transfer kTransfer>
 struct G2PGather {
   static constexpr int kSpan = kBlockSize + ShapeT::kSupport - 1;
-  static constexpr int kFirstChannel = GridChannels<kTransfer>::kMass;  // g2p_particle's lanes
+  static constexpr int kFirstChannel = GridChannels<kTransfer>::kVelocity;
   using Window = BlockGather<T, kSpan, GridChannels<kTransfer>::kGatherCount>;
   using Result = GuardSummary<T>;
 

@@ -19,7 +19,7 @@ inline Transfer transfer_named(const std::string& name) {
 }
 
 inline Attribute attribute_named(const std::string& name) {
-#define FIRN_ATTRIBUTE_NAMED(attribute, n, kind, alloc, layout, doc) \
+#define FIRN_ATTRIBUTE_NAMED(attribute, n, kind, alloc, doc) \
   if (name == #attribute) return Attribute::attribute;
   FIRN_PARTICLE_ATTRIBUTES(FIRN_ATTRIBUTE_NAMED)
 #undef FIRN_ATTRIBUTE_NAMED
