@@ -42,7 +42,7 @@ FIRN_HD ParticleCheck<T> g2p_particle(const ParticleView<T>& pv, std::size_t p, 
   // over b first (weights w_b and b w_b), then over a; the lanes are folded over c at the end, where
   // they take their weight along z, w_c, and the z moment its factor c. The loop over a is unrolled
   // (GCC kept it a loop, its weights spilled and reloaded each time: about 50 instructions per particle
-  // more; issue 15); P2G's, unrolled likewise, ran slower and is not.
+  // more; issue 15); P2G's, unrolled likewise, ran no faster and is not.
   constexpr int K = GridChannels<kTransfer>::kGatherCount, L = S * K;
   T s0[L] = {}, sa[L] = {}, sb[L] = {};
   FIRN_UNROLL

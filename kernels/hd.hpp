@@ -46,8 +46,9 @@
 #define FIRN_NOINLINE __attribute__((noinline))
 #endif
 
-// On a short loop of fixed count inside a loop over lanes (a polynomial's terms): unrolled, so that
-// the lanes loop around it is innermost and vectorises.
+// On a short loop of fixed count: inside a loop over lanes (a polynomial's terms), unrolled so that
+// the lanes loop around it is innermost and vectorises; around lane loops (G2P's loop over a
+// stencil axis), unrolled so that its per-turn values stay in registers.
 #if defined(__CUDACC__)
 #define FIRN_UNROLL _Pragma("unroll")
 #elif defined(__GNUC__)

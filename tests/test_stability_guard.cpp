@@ -129,6 +129,7 @@ TEST(GuardSummary, ClassifiesEachCheck) {
       {1.0f, -0.5f, 0.005f, GuardReason::inverted},  {nan, 1.0f, 0.005f, GuardReason::not_finite},
       {inf, 1.0f, 0.005f, GuardReason::not_finite},  {1.0f, -inf, 0.005f, GuardReason::not_finite},
       {1.0f, nan, 0.005f, GuardReason::not_finite},  {1.0f, 1.0f, inf, GuardReason::not_finite},
+      {1.0f, inf, 0.005f, GuardReason::not_finite},
       {big, 1.0f, big, GuardReason::too_fast},       {big, big, 0.005f, GuardReason::none},
   };
   for (const Case& k : cases) {
@@ -136,6 +137,10 @@ TEST(GuardSummary, ClassifiesEachCheck) {
     g.add(7, k.speed, k.J, k.moved, cell);
     EXPECT_EQ(g.reason, k.reason) << k.speed << " " << k.J << " " << k.moved;
     EXPECT_EQ(g.offender, k.reason == GuardReason::none ? kNoParticle : std::size_t(7));
+    if (k.reason == GuardReason::none) {  // the largest speed and smallest J count every particle
+      EXPECT_EQ(g.max_speed, k.speed);
+      EXPECT_EQ(g.min_J, k.J);
+    }
   }
   GuardSummary<float> a, b;
   a.add(9, 1.0f, -1.0f, 0.0f, cell);
@@ -145,6 +150,8 @@ TEST(GuardSummary, ClassifiesEachCheck) {
   for (const GuardSummary<float>& g : {a, b}) {
     EXPECT_EQ(g.offender, 4u);
     EXPECT_EQ(g.reason, GuardReason::too_fast);
+    EXPECT_EQ(g.J, 1.0f);
+    EXPECT_EQ(g.moved, 0.5f);
     EXPECT_EQ(g.min_J, -1.0f);
   }
 }

@@ -144,7 +144,7 @@ struct ConstitutiveUpdateLanes {
     // a lane has one, and the largest modulus as a float maximum (its double is the maximum of the
     // lanes' doubles). Then the lanes handed back, in lane order, each by the scalar update from the
     // F and state stored above: the values it read. (issue 15: a loop over every lane for all three
-    // took a quarter of neo-Hookean's update.)
+    // took 19 of neo-Hookean's 69 instructions per particle.)
     LaneMask<W> counted;
     for (int l = 0; l < W; ++l) counted.m[l] = ok.m[l] & int(l < count);
     ConstitutiveSummary sum = acc;
