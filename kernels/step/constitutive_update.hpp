@@ -148,9 +148,10 @@ struct ConstitutiveUpdateLanes {
     LaneMask<W> counted;
     for (int l = 0; l < W; ++l) counted.m[l] = ok.m[l] & int(l < count);
     ConstitutiveSummary sum = acc;
-    if (one.plastic_work && any(plastic && counted))
+    const LaneMask<W> yielded = plastic && counted;
+    if (one.plastic_work && any(yielded))
       for (int l = 0; l < count; ++l)
-        if (counted.m[l] && plastic.m[l]) sum.plastic_work += double(pv.vol0[first + l]) * double(work.v[l]);
+        if (yielded.m[l]) sum.plastic_work += double(pv.vol0[first + l]) * double(work.v[l]);
     const LaneMask<W> bad = counted && !finite(tau[0] + tau[1] + tau[2] + tau[3] + tau[4] + tau[5]);
     if (any(bad))
       for (int l = 0; l < count; ++l)
