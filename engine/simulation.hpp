@@ -41,6 +41,7 @@
 #include "engine/stability_guard.hpp"
 #include "kernels/backend/openmp.hpp"
 #include "kernels/backend/reduce_chunks.hpp"
+#include "kernels/backend/schedule.hpp"
 #include "kernels/backend/serial.hpp"
 #include "kernels/binning_view.hpp"
 #include "kernels/body_acceleration.hpp"
@@ -626,15 +627,18 @@ class Simulation {
                                                                    &grid_params_[0], pooled});
       solve_contact_pool<kTransfer>(pooled);
     }
-    backend_.parallel_for("grid_update", grid_.active_count(), GridUpdateSlots<T, kTransfer>{grid_.slots(), &grid_params_[0]});
+    backend_.parallel_for("grid_update", grid_.active_count(), GridUpdateSlots<T, kTransfer>{grid_.slots(), &grid_params_[0]},
+                          backend::Schedule::blocks);
     if (contact) {
       backend_.parallel_for("grid_update", grid_.active_count(),
-                            GridUpdateSlots<T, kTransfer>{contact_.grid_b.slots(), &grid_params_[1]});
+                            GridUpdateSlots<T, kTransfer>{contact_.grid_b.slots(), &grid_params_[1]},
+                            backend::Schedule::blocks);
       const Friction<T> friction{contact_.friction.law, T(contact_.friction.mu)};
       backend_.parallel_for("contact", grid_.active_count(),
                             ContactUpdateSlots<T, kTransfer>{grid_.slots(), contact_.grid_b.slots(),
                                                              contact_.normals.slots(), min_node_mass_,
-                                                             T(kContactVolumeFraction) * g.dx * g.dx * g.dx, friction});
+                                                             T(kContactVolumeFraction) * g.dx * g.dx * g.dx, friction},
+                            backend::Schedule::blocks);
     }
     if (mirror.any()) set_mirror_ghosts<kTransfer>(mirror, contact);
     collect_reactions(double(dt), contact);
@@ -658,21 +662,24 @@ class Simulation {
   void fold_mirror_images(const MirrorPlanes<T>& mirror, T dt, bool contact) {
     const T g[3] = {T(config_.gravity[0]), T(config_.gravity[1]), T(config_.gravity[2])};
     backend_.parallel_for("mirror.fold", grid_.active_count(),
-                          MirrorFold<T, kTransfer>{grid_.slots(), grid_.view(), mirror, dt, {g[0], g[1], g[2]}});
+                          MirrorFold<T, kTransfer>{grid_.slots(), grid_.view(), mirror, dt, {g[0], g[1], g[2]}},
+                          backend::Schedule::blocks);
     if (contact)
       backend_.parallel_for("mirror.fold", grid_.active_count(),
                             MirrorFold<T, kTransfer>{contact_.grid_b.slots(), contact_.grid_b.view(), mirror, dt,
-                                                     {g[0], g[1], g[2]}});
+                                                     {g[0], g[1], g[2]}},
+                            backend::Schedule::blocks);
   }
 
   // ... and the ghost nodes given their images' velocities after it.
   template <Transfer kTransfer>
   void set_mirror_ghosts(const MirrorPlanes<T>& mirror, bool contact) {
     backend_.parallel_for("mirror.ghosts", grid_.active_count(),
-                          MirrorGhosts<T, kTransfer>{grid_.slots(), grid_.view(), mirror});
+                          MirrorGhosts<T, kTransfer>{grid_.slots(), grid_.view(), mirror}, backend::Schedule::blocks);
     if (contact)
       backend_.parallel_for("mirror.ghosts", grid_.active_count(),
-                            MirrorGhosts<T, kTransfer>{contact_.grid_b.slots(), contact_.grid_b.view(), mirror});
+                            MirrorGhosts<T, kTransfer>{contact_.grid_b.slots(), contact_.grid_b.view(), mirror},
+                            backend::Schedule::blocks);
   }
 
   // Throws for a mirror wall that cannot be one (kernels/step/mirror_walls.hpp, mirror_wall_error).

@@ -8,6 +8,7 @@
 
 #include "engine/aligned_vector.hpp"
 #include "engine/block_compaction.hpp"
+#include "kernels/backend/schedule.hpp"
 #include "kernels/block_lists.hpp"
 #include "kernels/block_window.hpp"
 #include "kernels/grid_geometry.hpp"
@@ -59,7 +60,7 @@ class SparseGrid {
     T* data = data_.data();
     backend.parallel_for("grid.clear", slots_.size(), [=] FIRN_HD_LAMBDA(std::size_t s) {
       for (std::size_t i = 0; i < per_block; ++i) data[s * per_block + i] = T(0);
-    });
+    }, backend::Schedule::blocks);
   }
 
   SparseGridView<T> view() {

@@ -1,9 +1,11 @@
-// How a backend distributes a launch's items: `uniform` for items of equal cost (particles),
-// `uneven` for items of very different cost (grid blocks with different particle counts).
+// How a backend distributes a launch's items: `uniform` for many cheap items of equal cost
+// (particles), `uneven` for items of very different cost (a surface's cells), `blocks` for grid
+// blocks: fewer, heavier items whose cost can differ (a block near a collider evaluates its
+// distance field at every node, the others only scale their momenta).
 #pragma once
 
 namespace firn::backend {
 
-enum class Schedule { uniform, uneven };
+enum class Schedule { uniform, uneven, blocks };
 
 }  // namespace firn::backend
