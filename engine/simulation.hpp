@@ -213,7 +213,10 @@ class Simulation {
   }
 
   // Removes the particles p for which remove(view, p) is true (a kernel-style predicate, evaluated
-  // in parallel) and returns how many. The others keep their order within each material.
+  // in parallel) and returns how many. The others stay grouped by material, and within each are
+  // put in block order, as the step's reorder puts them: the gather that removes particles moves
+  // every column anyway, so it reorders them too (a conveyor removes particles every few steps,
+  // where a reorder of its own moved every column once more; issue 15).
   template <class Predicate>
   std::size_t remove_particles(Predicate remove) {
     prepare();
@@ -222,7 +225,8 @@ class Simulation {
         "particles.count_removed", pv.n, std::size_t(0),
         [=] FIRN_HD_LAMBDA(std::size_t p, std::size_t& acc) { acc += remove(pv, p) ? 1 : 0; }, Sum{});
     if (doomed == 0) return 0;
-    // Each material's kept particles by a compaction on the backend, in their order.
+    const std::uint32_t* walk = block_order();
+    // Each material's kept particles by a compaction on the backend, in block order.
     if (regroup_.size() < pv.n - doomed) regroup_.resize(pv.n - doomed);
     std::size_t kept = 0;
     for (auto& m : materials_) {
@@ -232,12 +236,13 @@ class Simulation {
         continue;
       }
       const std::size_t count =
-          keep_.count(m.range.end - first, KeptParticle<T, Predicate>{remove, pv, first}, backend_)[1];
-      keep_.write(KeptList{regroup_.data() + kept, first}, backend_);
+          keep_.count(m.range.end - first, KeptParticle<T, Predicate>{remove, pv, walk, first}, backend_)[1];
+      keep_.write(KeptList{regroup_.data() + kept, walk, first}, backend_);
       m.range = {kept, kept + count};
       kept += count;
     }
     storage_.gather(regroup_.data(), kept, backend_);
+    binning_.walk_breaks() = 0;  // in block order now; the step's binning sorts them again
     return doomed;
   }
 
@@ -364,6 +369,9 @@ class Simulation {
 
   // One step of dt (defined below the class, as is diagnostics()).
   void step(double dt);
+  // The particles' positions in block order, material by material (the binning's sort of the
+  // step's shape function), for remove_particles.
+  const std::uint32_t* block_order();
 
   // Steps until `time`, shortening the last step to land on it exactly.
   void advance_to(double time) {
@@ -1011,6 +1019,18 @@ void Simulation<T, Backend>::step(double dt) {
   time_ += dt;
   last_dt_ = dt;
   ++steps_;
+}
+
+template <class T, class Backend>
+const std::uint32_t* Simulation<T, Backend>::block_order() {
+  // A particle outside the grid is sorted as if inside (ParticleBinning::compute_keys); the step's
+  // own binning names it.
+  if (config_.shape == Shape::quadratic)
+    binning_.compute_keys<QuadraticBSpline<T>>(storage_.view(), ranges(), grid_.geometry(), grid_.blocks(), backend_);
+  else
+    binning_.compute_keys<CubicBSpline<T>>(storage_.view(), ranges(), grid_.geometry(), grid_.blocks(), backend_);
+  binning_.sort(grid_.blocks(), backend_);
+  return binning_.order();
 }
 
 template <class T, class Backend>

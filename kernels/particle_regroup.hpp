@@ -3,9 +3,10 @@
 // conveyor does every few steps, does not bring the columns to the host (issue 14, item 3):
 //   RunOrder           order[i] for a concatenation of contiguous runs of old indices (the
 //                      particles grouped by material after some were added);
-//   KeptParticle       classifies particle first + i for a compaction (kernels/block_compaction.hpp):
-//                      0 where it stays, -1 where `remove` takes it;
-//   KeptList           writes the kept particles' indices, in increasing order, into `order`.
+//   KeptParticle       classifies the particle at position first + i of a walk (walk[first + i]) for
+//                      a compaction (kernels/block_compaction.hpp): 0 where it stays, -1 where
+//                      `remove` takes it;
+//   KeptList           writes the kept particles' indices, in the walk's order, into `order`.
 #pragma once
 
 #include <cstddef>
@@ -41,17 +42,19 @@ template <class T, class Remove>
 struct KeptParticle {
   Remove remove;  // remove(pv, p): a kernel-style predicate
   ParticleView<T> pv;
-  std::size_t first;
+  const std::uint32_t* walk;  // old indices in the order they are to keep
+  std::size_t first;          // the material's first position in the walk
 
-  FIRN_HD int operator()(std::size_t i) const { return remove(pv, first + i) ? -1 : 0; }
+  FIRN_HD int operator()(std::size_t i) const { return remove(pv, walk[first + i]) ? -1 : 0; }
 };
 
 struct KeptList {
-  std::uint32_t* order;  // the material's first new position
-  std::size_t first;     // the material's first old index
+  std::uint32_t* order;       // the material's first new position
+  const std::uint32_t* walk;  // as in KeptParticle
+  std::size_t first;
 
   FIRN_HD void selected(std::size_t i, int, std::uint32_t, std::uint32_t position) const {
-    order[position] = std::uint32_t(first + i);
+    order[position] = walk[first + i];
   }
   FIRN_HD void rejected(std::size_t) const {}
 };
