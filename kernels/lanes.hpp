@@ -137,6 +137,19 @@ FIRN_HD bool any(const LaneMask<W>& a) {
   return r != 0;
 }
 
+// The largest lane, by halving: without NaNs the result does not depend on the order of the
+// comparisons, so it is the maximum a loop over the lanes finds, in log2(W) vector steps rather
+// than a chain of W dependent ones.
+template <class T, int W>
+FIRN_HD T largest(Lanes<T, W> a) {
+  static_assert((W & (W - 1)) == 0, "lanes in a power of two");
+  for (int w = W / 2; w > 0; w /= 2) {
+    FIRN_LANES
+    for (int l = 0; l < w; ++l) a.v[l] = a.v[l] < a.v[l + w] ? a.v[l + w] : a.v[l];
+  }
+  return a.v[0];
+}
+
 // dst[l] = a.v[l] for l < count: one vector store where count is W (a loop to count alone became a
 // call to memcpy per column; issue 15).
 template <class T, int W>

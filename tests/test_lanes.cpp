@@ -77,6 +77,35 @@ void check_pow() {
 TEST(LaneMath, PowerFloat) { check_pow<float>(); }
 TEST(LaneMath, PowerDouble) { check_pow<double>(); }
 
+// The hardening law skips pow_lanes where every base is 1 (J2Hardening::evaluate): that is exact
+// only if pow_lanes gives 1 there, for any exponent, and keeps the lanes.
+TEST(LaneMath, PowerOfOneIsOne) {
+  constexpr int W = lane_width<float>(kHostVectorBytes);
+  for (const float n : {0.02f, 0.5f, 1.0f, 2.5f, -1.3f, 40.0f}) {
+    LaneMask<W> ok = LaneMask<W>::all();
+    const Lanes<float, W> p = pow_lanes(Lanes<float, W>(1.0f), n, ok);
+    for (int l = 0; l < W; ++l) {
+      EXPECT_EQ(p.v[l], 1.0f) << n;
+      EXPECT_TRUE(ok.m[l]) << n;
+    }
+  }
+}
+
+// largest() against a loop over the lanes, with the maximum in every lane in turn.
+TEST(LaneMath, LargestIsTheMaximum) {
+  constexpr int W = batch_width<float>(kHostVectorBytes);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> value(0.0f, 1e9f);
+  for (int top = 0; top < W; ++top) {
+    Lanes<float, W> a;
+    for (int l = 0; l < W; ++l) a.v[l] = value(random);
+    a.v[top] = 2e9f;
+    EXPECT_EQ(largest(a), 2e9f) << top;
+    a.v[top] = 0.0f;
+    EXPECT_EQ(largest(a), *std::max_element(a.v, a.v + W)) << top;
+  }
+}
+
 // Trial states that yield by far: F = I + noise, scaled to J in [0.5, 1] (as
 // bench/bench_return_mapping.cpp). Their returns step beyond the series' radius.
 std::vector<Mat3<float>> trial_states(int count, double noise_amplitude = 0.25) {

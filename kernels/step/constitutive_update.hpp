@@ -156,15 +156,17 @@ struct ConstitutiveUpdateLanes {
     if (any(bad))
       for (int l = 0; l < count; ++l)
         if (bad.m[l]) sum.first_bad = std::min(sum.first_bad, first + l);
-    T top = T(0);
+    // The largest modulus of the counted lanes, 0 where none is positive (a NaN is passed over): each
+    // lane's, 0 where it is not counted or not positive, then their largest.
+    L moduli;
     for (int l = 0; l < W; ++l) {
       const PlasticState<T> after = Model::kUsesAlpha ? PlasticState<T>{s.v[l], T(1)}
                                     : Model::kUsesJp  ? PlasticState<T>{T(0), s.v[l]}
                                                       : PlasticState<T>{};
       const T modulus = one.model.p_wave_modulus(after);
-      top = counted.m[l] && top < modulus ? modulus : top;
+      moduli.v[l] = counted.m[l] && modulus > T(0) ? modulus : T(0);
     }
-    sum.max_modulus = std::max(sum.max_modulus, double(top));
+    sum.max_modulus = std::max(sum.max_modulus, double(largest(moduli)));
     acc = sum;
     for (int l = 0; l < count; ++l)
       if (!ok.m[l]) one(first + l - one.begin, acc);
