@@ -369,9 +369,6 @@ class Simulation {
 
   // One step of dt (defined below the class, as is diagnostics()).
   void step(double dt);
-  // The particles' positions in block order, material by material (the binning's sort of the
-  // step's shape function), for remove_particles.
-  const std::uint32_t* block_order();
 
   // Steps until `time`, shortening the last step to land on it exactly.
   void advance_to(double time) {
@@ -701,6 +698,10 @@ class Simulation {
     }
   }
 
+  // The particles' indices in block order, material by material, as the step's binning sorts them
+  // (its keys for the scene's shape function), for remove_particles.
+  const std::uint32_t* block_order();
+
   // Bins particles by block, reorders the arrays when the walk has become scattered and activates
   // the grid blocks the particles touch.
   template <class ShapeT>
@@ -1029,7 +1030,7 @@ const std::uint32_t* Simulation<T, Backend>::block_order() {
     binning_.compute_keys<QuadraticBSpline<T>>(storage_.view(), ranges(), grid_.geometry(), grid_.blocks(), backend_);
   else
     binning_.compute_keys<CubicBSpline<T>>(storage_.view(), ranges(), grid_.geometry(), grid_.blocks(), backend_);
-  binning_.sort(grid_.blocks(), backend_);
+  binning_.sort_keys(backend_);
   return binning_.order();
 }
 

@@ -137,7 +137,7 @@ FIRN_HD bool any(const LaneMask<W>& a) {
   return r != 0;
 }
 
-// The largest lane, by halving: without NaNs the result does not depend on the order of the
+// The largest lane, by halving: without NaNs or -0 the result does not depend on the order of the
 // comparisons, so it is the maximum a loop over the lanes finds, in log2(W) vector steps rather
 // than a chain of W dependent ones.
 template <class T, int W>

@@ -78,32 +78,42 @@ TEST(LaneMath, PowerFloat) { check_pow<float>(); }
 TEST(LaneMath, PowerDouble) { check_pow<double>(); }
 
 // The hardening law skips pow_lanes where every base is 1 (J2Hardening::evaluate): that is exact
-// only if pow_lanes gives 1 there, for any exponent, and keeps the lanes.
-TEST(LaneMath, PowerOfOneIsOne) {
-  constexpr int W = lane_width<float>(kHostVectorBytes);
-  for (const float n : {0.02f, 0.5f, 1.0f, 2.5f, -1.3f, 40.0f}) {
+// only if pow_lanes gives 1 there, for every finite exponent, and keeps the lanes.
+template <class T>
+void check_power_of_one() {
+  constexpr int W = lane_width<T>(kHostVectorBytes);
+  for (const T n : {T(0.02), T(0.5), T(1), T(2.5), T(-1.3), T(40), T(0), T(-0.0)}) {
     LaneMask<W> ok = LaneMask<W>::all();
-    const Lanes<float, W> p = pow_lanes(Lanes<float, W>(1.0f), n, ok);
+    const Lanes<T, W> p = pow_lanes(Lanes<T, W>(T(1)), n, ok);
     for (int l = 0; l < W; ++l) {
-      EXPECT_EQ(p.v[l], 1.0f) << n;
+      EXPECT_EQ(p.v[l], T(1)) << n;
       EXPECT_TRUE(ok.m[l]) << n;
     }
   }
 }
 
-// largest() against a loop over the lanes, with the maximum in every lane in turn.
+TEST(LaneMath, PowerOfOneIsOneFloat) { check_power_of_one<float>(); }
+TEST(LaneMath, PowerOfOneIsOneDouble) { check_power_of_one<double>(); }
+
+// largest() against a loop over the lanes: the maximum in every lane in turn, ties, zeros and
+// +inf.
 TEST(LaneMath, LargestIsTheMaximum) {
-  constexpr int W = batch_width<float>(kHostVectorBytes);
   std::mt19937 random(3);
   std::uniform_real_distribution<float> value(0.0f, 1e9f);
-  for (int top = 0; top < W; ++top) {
-    Lanes<float, W> a;
-    for (int l = 0; l < W; ++l) a.v[l] = value(random);
+  for (int top = 0; top < kW; ++top) {
+    Lanes<float, kW> a;
+    for (int l = 0; l < kW; ++l) a.v[l] = value(random);
     a.v[top] = 2e9f;
     EXPECT_EQ(largest(a), 2e9f) << top;
+    a.v[(top + kW / 2) % kW] = 2e9f;  // a tie
+    EXPECT_EQ(largest(a), 2e9f) << top;
+    a.v[top] = std::numeric_limits<float>::infinity();
+    EXPECT_EQ(largest(a), std::numeric_limits<float>::infinity()) << top;
     a.v[top] = 0.0f;
-    EXPECT_EQ(largest(a), *std::max_element(a.v, a.v + W)) << top;
+    a.v[(top + kW / 2) % kW] = 0.0f;
+    EXPECT_EQ(largest(a), *std::max_element(a.v, a.v + kW)) << top;
   }
+  EXPECT_EQ(largest(Lanes<float, kW>(0.0f)), 0.0f);
 }
 
 // Trial states that yield by far: F = I + noise, scaled to J in [0.5, 1] (as

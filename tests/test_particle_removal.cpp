@@ -27,6 +27,8 @@ TEST(ParticleRemoval, KeepsTheOthersInBlockOrderWithinEachMaterial) {
   Simulation<float, backend::OpenMP> sim(c);
   const ElasticModuli moduli = ElasticModuli::from_E_nu(1e6, 0.3);
   const int first = sim.add_material({"first", "neo_hookean", 1000, moduli});
+  // A material without particles between the two: the binning's buckets count only the others.
+  const int empty = sim.add_material({"empty", "neo_hookean", 800, moduli});
   const int second = sim.add_material({"second", "neo_hookean", 500, moduli});
   // Each material's particles added in a shuffled order, so that neither is in block order before.
   std::mt19937 random(7);
@@ -59,17 +61,17 @@ TEST(ParticleRemoval, KeepsTheOthersInBlockOrderWithinEachMaterial) {
   ASSERT_GT(steps_back(first), 0u);
   ASSERT_GT(steps_back(second), 0u);
 
-  // Each particle's material and velocity by its id, before.
+  // Each particle's material and position by its id, before.
   struct Before {
     int material;
-    float vx, vy;
+    std::array<float, 3> x;
   };
   std::map<std::uint64_t, Before> before;
   ParticleView<float> pv = sim.particles();
   const std::size_t n = pv.n;
   for (int m : {first, second})
     for (std::size_t p = sim.material_range(m).begin; p < sim.material_range(m).end; ++p)
-      before[pv.id[p]] = {m, pv.v[0][p], pv.v[1][p]};
+      before[pv.id[p]] = {m, {pv.x[0][p], pv.x[1][p], pv.x[2][p]}};
 
   const float cut = 0.2f;  // removes x < cut
   std::size_t expected = 0;
@@ -85,7 +87,7 @@ TEST(ParticleRemoval, KeepsTheOthersInBlockOrderWithinEachMaterial) {
   for (std::size_t p = 0; p < pv.n; ++p) kept.insert(pv.id[p]);
   EXPECT_EQ(kept.size(), pv.n);
   std::size_t next = 0;
-  for (int m : {first, second}) {
+  for (int m : {first, empty, second}) {
     const ParticleRange r = sim.material_range(m);
     EXPECT_EQ(r.begin, next);
     next = r.end;
@@ -93,8 +95,7 @@ TEST(ParticleRemoval, KeepsTheOthersInBlockOrderWithinEachMaterial) {
       EXPECT_GE(pv.x[0][p], cut);
       const Before& b = before.at(pv.id[p]);
       EXPECT_EQ(b.material, m);
-      EXPECT_EQ(pv.v[0][p], b.vx);
-      EXPECT_EQ(pv.v[1][p], b.vy);
+      for (int d = 0; d < 3; ++d) EXPECT_EQ(pv.x[d][p], b.x[d]);
     }
     EXPECT_EQ(steps_back(m), 0u) << "material " << m << " is not in block order";
   }

@@ -49,7 +49,7 @@ struct OpenMP {
       for (long i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
     } else {
       // From 64 blocks on, guided: runs that shrink as the launch ends, for the blocks that reach a
-      // collider. tire_on_snow's grid update (issue 15, Intel Xeon, 2 threads) took 2.7 ms per step
+      // collider. tire_on_snow's grid update (issue 15, Intel Xeon, 2 threads) took 2.76 ms per step
       // as uniform items (fewer than kMinParallelItems: one thread), 1.40 ms guided, 1.45-1.80 ms
       // dynamic in runs of 1 to 16 blocks.
 #pragma omp parallel for num_threads(thread_count) schedule(guided) if (count >= kMinParallelBlocks)

@@ -66,8 +66,8 @@ struct J2Hardening {
       const L base = L(T(1)) + L(K_h) * alpha;
       const LaneMask<W> positive = base > L(T(0));
       const L safe = select(positive, base, L(T(1)));
-      // pow_lanes(1, n) is 1 exactly and keeps `ok` (ln 1 = 0, exp 0 = 1): a batch whose bases are
-      // all 1 (alpha = 0: particles that have not yielded yet) skips it.
+      // pow_lanes(1, n) is 1 exactly and keeps `ok` for a finite n (ln 1 = 0, exp 0 = 1): a batch
+      // whose bases are all 1 (alpha = 0: particles that have not yielded yet) skips it.
       const L one(T(1));
       const L p = any(safe < one || safe > one) ? pow_lanes(safe, n, ok) : one;
       sigma = select(positive, L(sigma_y0) * p, L(T(0)));
