@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "engine/aligned_vector.hpp"
+#include "kernels/backend/schedule.hpp"
 #include "kernels/block_compaction.hpp"
 
 namespace firn {
@@ -34,7 +35,10 @@ class BlockCompaction {
     scratch_.resize(chunks_ * kClasses + kClasses + 1);
     classes_.resize(n);
     std::uint32_t* counts = scratch_.data();
-    backend.parallel_for(names_.count, chunks_, CompactionCount<kClasses, Classify>{classify, n, counts, classes_.data()});
+    // Chunks of kCompactionChunk items: the grid blocks' schedule, so that a compaction of
+    // particles (a conveyor's removal: 3,600 chunks of tire_on_snow) is not left to one thread.
+    backend.parallel_for(names_.count, chunks_, CompactionCount<kClasses, Classify>{classify, n, counts, classes_.data()},
+                         backend::Schedule::blocks);
     backend.parallel_for(names_.prefix, 1, CompactionPrefix<kClasses>{chunks_, counts, begins()});
     std::array<std::uint32_t, kClasses + 1> out;
     for (int k = 0; k <= kClasses; ++k) out[std::size_t(k)] = begins()[k];
@@ -45,7 +49,8 @@ class BlockCompaction {
   template <class Emit, class Backend>
   void write(const Emit& emit, const Backend& backend) {
     backend.parallel_for(names_.write, chunks_,
-                         CompactionWrite<kClasses, Emit>{emit, n_, classes_.data(), scratch_.data(), begins()});
+                         CompactionWrite<kClasses, Emit>{emit, n_, classes_.data(), scratch_.data(), begins()},
+                         backend::Schedule::blocks);
   }
 
  private:
