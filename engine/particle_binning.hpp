@@ -15,6 +15,7 @@
 #include "engine/aligned_vector.hpp"
 #include "engine/block_compaction.hpp"
 #include "kernels/backend/block_colouring.hpp"
+#include "kernels/backend/schedule.hpp"
 #include "kernels/binning_view.hpp"
 #include "kernels/block_lists.hpp"
 #include "kernels/combine.hpp"
@@ -137,7 +138,7 @@ class ParticleBinning {
         }
         counts[t * K + key] += std::uint32_t(p - run);
       }
-    });
+    }, backend::Schedule::parts);
     // Exclusive prefix, bucket-major then part: part t's particles of bucket k follow part t-1's.
     bucket_begin_.resize(K + 1);
     std::uint32_t running = 0;
@@ -162,7 +163,7 @@ class ParticleBinning {
         while (++p < end && keys[p] == key);
         counts[t * K + key] = cursor;
       }
-    });
+    }, backend::Schedule::parts);
   }
 
   // Whether reordering the particle arrays pays now; called once per step, after sort(). Walking

@@ -44,6 +44,9 @@ struct OpenMP {
     if (schedule == Schedule::uniform) {
 #pragma omp parallel for num_threads(thread_count) schedule(static) if (count >= kMinParallelItems)
       for (long i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
+    } else if (schedule == Schedule::parts) {
+#pragma omp parallel for num_threads(thread_count) schedule(static, 1)
+      for (long i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
     } else if (schedule == Schedule::uneven) {
 #pragma omp parallel for num_threads(thread_count) schedule(dynamic, 1) if (count >= kMinParallelBlocks)
       for (long i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
