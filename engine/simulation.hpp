@@ -854,7 +854,8 @@ class Simulation {
     backend_.parallel_for("footprint", std::size_t(box.count[0]) * std::size_t(box.count[2]),
                           FootprintColumns<T>{footprint_blocks_.data(), contact ? contact_.footprint_b.data() : nullptr,
                                               grid_.block_map(), box, dt, footprint_.impulse.data(), footprint_.nx,
-                                              footprint_.nz});
+                                              footprint_.nz},
+                          backend::Schedule::blocks);
     footprint_.time += dt;
   }
 
