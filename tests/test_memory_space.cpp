@@ -4,8 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
+#include <fstream>
 #include <map>
+#include <set>
+#include <sstream>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "engine/aligned_vector.hpp"
 #include "kernels/backend/serial.hpp"
@@ -84,6 +90,56 @@ TEST(MemorySpace, ASimulationKeepsItsBuffersInItsSpaceAndItsResults) {
   const std::uint64_t tracked = drop_cube(kTracked, true);
   EXPECT_EQ(tracked, drop_cube(backend::kHostMemory, false));
   EXPECT_TRUE(live().empty());
+}
+
+// The VmFlags of the mapping of this process holding address a ("" where none holds it).
+std::string mapping_flags(const void* a) {
+  const auto at = reinterpret_cast<std::uintptr_t>(a);
+  std::ifstream smaps("/proc/self/smaps");
+  bool holds = false;
+  for (std::string line; std::getline(smaps, line);) {
+    std::uintptr_t begin = 0, end = 0;
+    char dash = 0;
+    std::istringstream range(line);
+    if (range >> std::hex >> begin >> dash >> end && dash == '-' && line.find(' ') != std::string::npos) {
+      holds = begin <= at && at < end;
+    } else if (holds && line.rfind("VmFlags:", 0) == 0) {
+      return line;
+    }
+  }
+  return "";
+}
+
+TEST(MemorySpace, LargeHostBuffersLieInHugePagesWithStaggeredStarts) {
+  constexpr std::size_t kBytes = std::size_t(3) << 19;  // 1.5 MiB: 393,216 floats
+  std::set<std::uintptr_t> l1_sets, page_offsets;
+  std::vector<char*> buffers;
+  // Where the kernel has transparent huge pages at all (any mode: the flag is the request).
+  const bool thp = bool(std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled"));
+  for (int b = 0; b < 3; ++b) {
+    char* p = static_cast<char*>(backend::kHostMemory.allocate(kBytes));
+    buffers.push_back(p);
+    const auto a = reinterpret_cast<std::uintptr_t>(p);
+    EXPECT_EQ(a % 64, 0u);
+    l1_sets.insert((a >> 6) % 64);                  // the set of a 64-set L1 (bits 6-11)
+    page_offsets.insert(a % (std::size_t(2) << 20));  // where it starts in its 2 MiB page
+    std::memset(p, b + 1, kBytes);                  // every byte can be written
+    if (thp) {  // asked for: MADV_HUGEPAGE
+      EXPECT_NE(mapping_flags(p).find(" hg"), std::string::npos) << mapping_flags(p);
+      EXPECT_NE(mapping_flags(p + kBytes - 1).find(" hg"), std::string::npos);
+    }
+  }
+  EXPECT_EQ(l1_sets.size(), 3u);  // the same particle of three columns in three different sets
+  EXPECT_EQ(page_offsets.size(), 3u);
+  for (int b = 0; b < 3; ++b) {
+    EXPECT_EQ(buffers[b][0], b + 1);
+    EXPECT_EQ(buffers[b][kBytes - 1], b + 1);
+    backend::kHostMemory.deallocate(buffers[b], kBytes);
+    EXPECT_EQ(mapping_flags(buffers[b]), "");  // unmapped, the page it started in included
+  }
+  void* small = backend::kHostMemory.allocate(1000);  // small buffers: aligned to a line
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(small) % 64, 0u);
+  backend::kHostMemory.deallocate(small, 1000);
 }
 
 }  // namespace
