@@ -27,6 +27,21 @@ struct GatherColumns {
   }
 };
 
+// col[c][to[i]] = col[c][from[i]] for the first `count` of K columns: a group of columns of
+// ParticleStorage::move. No `from` is also a `to`, so the moves run in any order.
+template <class S, int K>
+struct MoveColumns {
+  S* col[K];
+  const std::uint32_t* to;
+  const std::uint32_t* from;
+  int count;
+  FIRN_HD void operator()(std::size_t i) const {
+    const std::uint32_t a = to[i], b = from[i];
+    for (int c = 0; c < K; ++c)
+      if (c < count) col[c][a] = col[c][b];
+  }
+};
+
 template <class T>
 class ParticleStorage {
  public:
@@ -90,6 +105,22 @@ class ParticleStorage {
     gather_columns(reals, spare_real_, order, count, backend);
     gather_columns(indices, spare_index_, order, count, backend);
     size_ = count;
+  }
+
+  // Copies particle moves[count + i] onto particle moves[i] in every enabled column, for i < count
+  // (moves: the destinations, then the sources; none of the sources is a destination): a removal
+  // that fills its holes with a few particles from the tail moves only those.
+  template <class Backend>
+  void move(const std::uint32_t* moves, std::size_t count, const Backend& backend) {
+    GatherList<T> reals;
+    GatherList<std::uint32_t> indices;
+#define FIRN_MOVE_LIST(name, n, kind, alloc, doc) \
+  for (auto& col : name##_)                       \
+    if (!col.empty()) list_of(reals, indices, col).add(col);
+    FIRN_PARTICLE_ATTRIBUTES(FIRN_MOVE_LIST)
+#undef FIRN_MOVE_LIST
+    move_columns(reals, moves, count, backend);
+    move_columns(indices, moves, count, backend);
   }
 
   // Every attribute by name with its enabled flag, and the columns of the enabled ones, for a
@@ -169,6 +200,19 @@ class ParticleStorage {
       }
       backend.parallel_for("particles.gather", count, copy);
       for (int c = 0; c < copy.count; ++c) columns.col[first + c]->swap(spare[c]);
+    }
+  }
+
+  template <class S, class Backend>
+  static void move_columns(const GatherList<S>& columns, const std::uint32_t* moves, std::size_t count,
+                           const Backend& backend) {
+    for (int first = 0; first < columns.n; first += kGatherGroup) {
+      MoveColumns<S, kGatherGroup> copy{};
+      copy.to = moves;
+      copy.from = moves + count;
+      copy.count = columns.n - first < kGatherGroup ? columns.n - first : kGatherGroup;
+      for (int c = 0; c < copy.count; ++c) copy.col[c] = columns.col[first + c]->data();
+      backend.parallel_for("particles.move", count, copy);
     }
   }
 

@@ -213,36 +213,47 @@ class Simulation {
   }
 
   // Removes the particles p for which remove(view, p) is true (a kernel-style predicate, evaluated
-  // in parallel) and returns how many. The others stay grouped by material, and within each are
-  // put in block order, as the step's reorder puts them: the gather that removes particles moves
-  // every column anyway, so it reorders them too (a conveyor removes particles every few steps,
-  // where a reorder of its own moved every column once more; issue 15).
+  // in parallel) and returns how many. The others keep their material and, but for a few, their
+  // order: each material's holes are filled with its own kept particles from the end of its range,
+  // and a material after one that lost particles moves its last few into the gap they left. So a
+  // removal moves no more particles than it removes, those of the materials after them aside (a
+  // conveyor removes particles every other step; a gather of every particle each time was an eighth
+  // of a long tire run's step, issue 15), and the step's reorder puts the moved ones back in block
+  // order when that pays (ParticleBinning::needs_reorder).
   template <class Predicate>
   std::size_t remove_particles(Predicate remove) {
     prepare();
     const ParticleView<T> pv = storage_.view();
-    const std::size_t doomed = backend_.parallel_reduce(
-        "particles.count_removed", pv.n, std::size_t(0),
-        [=] FIRN_HD_LAMBDA(std::size_t p, std::size_t& acc) { acc += remove(pv, p) ? 1 : 0; }, Sum{});
-    if (doomed == 0) return 0;
-    const std::uint32_t* walk = block_order();
-    // Each material's kept particles by a compaction on the backend, in block order.
-    if (regroup_.size() < pv.n - doomed) regroup_.resize(pv.n - doomed);
-    std::size_t kept = 0;
+    std::size_t kept = 0, doomed = 0;  // the particles kept in the materials before m, and removed
     for (auto& m : materials_) {
-      const std::size_t first = m.range.begin;
-      if (m.range.end == first) {  // no launches for a material without particles
+      const std::size_t first = m.range.begin, n = m.range.end - first;
+      if (n == 0) {  // no launches for a material without particles
         m.range = {kept, kept};
         continue;
       }
-      const std::size_t count =
-          keep_.count(m.range.end - first, KeptParticle<T, Predicate>{remove, pv, walk, first}, backend_)[1];
-      keep_.write(KeptList{regroup_.data() + kept, walk, first}, backend_);
-      m.range = {kept, kept + count};
-      kept += count;
+      const std::size_t removed = backend_.parallel_reduce(
+          "particles.count_removed", n, std::size_t(0),
+          [=] FIRN_HD_LAMBDA(std::size_t i, std::size_t& acc) { acc += remove(pv, first + i) ? 1 : 0; }, Sum{});
+      const std::size_t end = m.range.end - removed;  // the material's kept particles: [first, end)
+      if (removed > 0) {
+        const std::size_t holes = refill_.count(n, RefillClass<T, Predicate>{remove, pv, first, end}, backend_)[1];
+        if (moves_.size() < 2 * holes) moves_.resize(2 * holes);
+        refill_.write(RefillList{moves_.data(), first}, backend_);
+        storage_.move(moves_.data(), holes, backend_);
+      }
+      // Into the gap [kept, first) the earlier materials left: the range's last particles, at most
+      // as many as the gap holds, so that no source is a destination.
+      const std::size_t shift = std::min(first - kept, end - first);
+      if (shift > 0) {
+        if (moves_.size() < 2 * shift) moves_.resize(2 * shift);
+        backend_.parallel_for("particles.shift", shift, RunMoves{moves_.data(), kept, end - shift, shift});
+        storage_.move(moves_.data(), shift, backend_);
+      }
+      m.range = {kept, kept + (end - first)};
+      kept += end - first;
+      doomed += removed;
     }
-    storage_.gather(regroup_.data(), kept, backend_);
-    binning_.walk_breaks() = 0;  // in block order now; the step's binning sorts them again
+    storage_.resize(kept);
     return doomed;
   }
 
@@ -698,10 +709,6 @@ class Simulation {
     }
   }
 
-  // The particles' indices in block order, material by material, as the step's binning sorts them
-  // (its keys for the scene's shape function), for remove_particles.
-  const std::uint32_t* block_order();
-
   // Bins particles by block, reorders the arrays when the walk has become scattered and activates
   // the grid blocks the particles touch.
   template <class ShapeT>
@@ -973,8 +980,9 @@ class Simulation {
   };
   std::vector<StagedRun> staged_;
   AlignedVector<ParticleRun> runs_;         // prepare()'s grouping
-  AlignedVector<std::uint32_t> regroup_;    // the permutation prepare() or remove_particles() applies
-  BlockCompaction<1> keep_{{"particles.keep.count", "particles.keep.prefix", "particles.keep.write"}};
+  AlignedVector<std::uint32_t> regroup_;    // the permutation prepare() applies
+  AlignedVector<std::uint32_t> moves_;      // remove_particles()' moves: destinations, then sources
+  BlockCompaction<2> refill_{{"particles.refill.count", "particles.refill.prefix", "particles.refill.write"}};
   SparseGrid<T> grid_;
   // Multi-velocity-field contact: group B's grid, the normals' grid and group B's grid-update
   // buffers; allocated and used only while both groups have particles (contact_active()).
@@ -1021,18 +1029,6 @@ void Simulation<T, Backend>::step(double dt) {
   time_ += dt;
   last_dt_ = dt;
   ++steps_;
-}
-
-template <class T, class Backend>
-const std::uint32_t* Simulation<T, Backend>::block_order() {
-  // A particle outside the grid is sorted as if inside (ParticleBinning::compute_keys); the step's
-  // own binning names it.
-  if (config_.shape == Shape::quadratic)
-    binning_.compute_keys<QuadraticBSpline<T>>(storage_.view(), ranges(), grid_.geometry(), grid_.blocks(), backend_);
-  else
-    binning_.compute_keys<CubicBSpline<T>>(storage_.view(), ranges(), grid_.geometry(), grid_.blocks(), backend_);
-  binning_.sort_keys(backend_);
-  return binning_.order();
 }
 
 template <class T, class Backend>

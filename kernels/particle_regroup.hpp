@@ -3,10 +3,9 @@
 // conveyor does every few steps, does not bring the columns to the host (issue 14, item 3):
 //   RunOrder           order[i] for a concatenation of contiguous runs of old indices (the
 //                      particles grouped by material after some were added);
-//   KeptParticle       classifies the particle at position first + i of a walk (walk[first + i]) for
-//                      a compaction (kernels/block_compaction.hpp): 0 where it stays, -1 where
-//                      `remove` takes it;
-//   KeptList           writes the kept particles' indices, in the walk's order, into `order`.
+//   RefillClass, RefillList  a removal's holes in a material's range and the particles from its
+//                      tail that fill them (ParticleStorage::move);
+//   RunMoves           the moves that shift a run of particles.
 #pragma once
 
 #include <cstddef>
@@ -38,25 +37,44 @@ struct RunOrder {
   }
 };
 
+// A removal's refill of one material's range [first, first + n) that keeps `end - first`
+// particles: each removed particle below `end` is a hole (class 0), each kept one from `end` on a
+// source (class 1), as many of each, for a compaction (kernels/block_compaction.hpp). RefillList
+// writes the holes' positions and then the sources', each in increasing order, so that source i
+// fills hole i.
 template <class T, class Remove>
-struct KeptParticle {
+struct RefillClass {
   Remove remove;  // remove(pv, p): a kernel-style predicate
   ParticleView<T> pv;
-  const std::uint32_t* walk;  // old indices in the order they are to keep
-  std::size_t first;          // the material's first position in the walk
+  std::size_t first, end;
 
-  FIRN_HD int operator()(std::size_t i) const { return remove(pv, walk[first + i]) ? -1 : 0; }
+  FIRN_HD int operator()(std::size_t i) const {
+    const std::size_t p = first + i;
+    const bool removed = remove(pv, p);
+    return p < end ? (removed ? 0 : -1) : (removed ? -1 : 1);
+  }
 };
 
-struct KeptList {
-  std::uint32_t* order;       // the material's first new position
-  const std::uint32_t* walk;  // as in KeptParticle
+struct RefillList {
+  std::uint32_t* moves;  // [holes..., sources...]
   std::size_t first;
 
-  FIRN_HD void selected(std::size_t i, int, std::uint32_t, std::uint32_t position) const {
-    order[position] = walk[first + i];
+  FIRN_HD void selected(std::size_t i, int, std::uint32_t position, std::uint32_t) const {
+    moves[position] = std::uint32_t(first + i);
   }
   FIRN_HD void rejected(std::size_t) const {}
+};
+
+// A run's move: particles [from, from + count) onto [to, to + count), as the lists
+// ParticleStorage::move reads ([to..., from...]).
+struct RunMoves {
+  std::uint32_t* moves;
+  std::size_t to, from, count;
+
+  FIRN_HD void operator()(std::size_t i) const {
+    moves[i] = std::uint32_t(to + i);
+    moves[count + i] = std::uint32_t(from + i);
+  }
 };
 
 }  // namespace firn
