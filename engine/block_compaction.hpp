@@ -54,7 +54,7 @@ class BlockCompaction {
  private:
   // The chunks (kCompactionChunk items each) on every thread where there are many: a conveyor's
   // removal over tire_on_snow's 930,664 particles (3,636 chunks) ran on one thread as uniform
-  // items (keep.count 0.49 ms per step, 0.25 on two threads); the grid's compactions over its
+  // items (its count 0.49 ms per step, 0.25 on two threads); the grid's compactions over its
   // blocks (tens of chunks of a cheap test) stay on one, where a team costs more than it saves
   // (tire_on_snow: 0.23 ms per step in all, 0.28 on two threads).
   static constexpr std::size_t kParallelChunks = 1024;

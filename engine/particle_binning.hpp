@@ -101,13 +101,6 @@ class ParticleBinning {
   // particle blocks and their colouring.
   template <class Backend>
   void sort(const int blocks[3], const Backend& backend) {
-    sort_keys(backend);
-    collect_blocks(blocks, backend);
-  }
-
-  // The stable sort alone: order() and the buckets, without the blocks' lists.
-  template <class Backend>
-  void sort_keys(const Backend& backend) {
     const std::size_t n = keys_.size(), K = material_count_ * block_count_;
     if constexpr (sorts_on_device<Backend>(0)) {
       order_.resize(n);
@@ -116,6 +109,7 @@ class ParticleBinning {
     } else {
       counting_sort(n, K, backend);
     }
+    collect_blocks(blocks, backend);
   }
 
   // The CPU's stable counting sort in backend.threads() parts: order and bucket ranges (public, as

@@ -236,10 +236,15 @@ class Simulation {
           [=] FIRN_HD_LAMBDA(std::size_t i, std::size_t& acc) { acc += remove(pv, first + i) ? 1 : 0; }, Sum{});
       const std::size_t end = m.range.end - removed;  // the material's kept particles: [first, end)
       if (removed > 0) {
-        const std::size_t holes = refill_.count(n, RefillClass<T, Predicate>{remove, pv, first, end}, backend_)[1];
-        if (moves_.size() < 2 * holes) moves_.resize(2 * holes);
-        refill_.write(RefillList{moves_.data(), first}, backend_);
-        storage_.move(moves_.data(), holes, backend_);
+        const auto begins = refill_.count(n, RefillClass<T, Predicate>{remove, pv, first, end}, backend_);
+        const std::size_t holes = begins[1];
+        if (begins[2] != 2 * holes)  // as many sources as holes, unless the predicate changed its mind
+          throw std::logic_error("remove_particles: the predicate gave different answers for the same particles");
+        if (holes > 0) {  // none where only the tail's particles go
+          if (moves_.size() < 2 * holes) moves_.resize(2 * holes);
+          refill_.write(RefillList{moves_.data(), first}, backend_);
+          storage_.move(moves_.data(), holes, backend_);
+        }
       }
       // Into the gap [kept, first) the earlier materials left: the range's last particles, at most
       // as many as the gap holds, so that no source is a destination.

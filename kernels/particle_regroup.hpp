@@ -1,4 +1,5 @@
-// The permutations that regroup the particle columns (ParticleStorage::gather), built where the
+// The permutations and moves that regroup the particle columns (ParticleStorage::gather and
+// ParticleStorage::move), built where the
 // columns live (on the GPU under the CUDA backend) so that adding and removing particles, as a
 // conveyor does every few steps, does not bring the columns to the host (issue 14, item 3):
 //   RunOrder           order[i] for a concatenation of contiguous runs of old indices (the
@@ -65,8 +66,8 @@ struct RefillList {
   FIRN_HD void rejected(std::size_t) const {}
 };
 
-// A run's move: particles [from, from + count) onto [to, to + count), as the lists
-// ParticleStorage::move reads ([to..., from...]).
+// A run's move: particles [from, from + count) onto [to, to + count), two ranges that do not
+// overlap, as the lists ParticleStorage::move reads ([to..., from...]).
 struct RunMoves {
   std::uint32_t* moves;
   std::size_t to, from, count;

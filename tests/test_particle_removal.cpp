@@ -14,7 +14,6 @@
 #include "engine/particle_fill.hpp"
 #include "engine/simulation.hpp"
 #include "kernels/backend/openmp.hpp"
-#include "kernels/shape_functions.hpp"
 
 namespace firn {
 namespace {
@@ -37,11 +36,21 @@ TEST(ParticleRemoval, KeepsTheOthersAndMovesNoMoreThanItRemoves) {
   };
   const double h = c.dx / 2, volume = h * h * h;
   sim.add_particles(first, shuffled_box({0.05, 0.05, 0.05}, {0.35, 0.10, 0.15}), {1, 0, 0}, volume);
-  sim.add_particles(second, shuffled_box({0.05, 0.10, 0.05}, {0.35, 0.15, 0.15}), {0, 2, 0}, volume);
+  sim.add_particles(second, shuffled_box({0.05, 0.10, 0.05}, {0.35, 0.17, 0.15}), {0, 2, 0}, volume);
   sim.prepare();
+  {  // values of every particle's own in a column of each group of four that a move copies
+    const ParticleView<float> pv = sim.particles();
+    for (std::size_t p = 0; p < pv.n; ++p) {
+      pv.v[1][p] = float(pv.id[p]);
+      pv.F[8][p] = 2.0f * float(pv.id[p]);
+      pv.vol0[p] = 3.0f * float(pv.id[p]);
+    }
+  }
 
   // Removes what `doomed` takes and checks the survivors: each once, in its material, with its state,
-  // and all but at most twice as many as were removed (holes filled, gaps closed) at their index.
+  // and all but at most twice as many as were removed at their index (with two materials: the
+  // holes, at most as many as removed, and the second material's shift into the gap the first
+  // left, at most as many again).
   auto remove_and_check = [&](auto doomed) {
     struct Before {
       int material;
@@ -74,6 +83,9 @@ TEST(ParticleRemoval, KeepsTheOthersAndMovesNoMoreThanItRemoves) {
         const Before& b = before.at(pv.id[p]);
         EXPECT_EQ(b.material, m);
         for (int d = 0; d < 3; ++d) EXPECT_EQ(pv.x[d][p], b.x[d]);
+        EXPECT_EQ(pv.v[1][p], float(pv.id[p]));
+        EXPECT_EQ(pv.F[8][p], 2.0f * float(pv.id[p]));
+        EXPECT_EQ(pv.vol0[p], 3.0f * float(pv.id[p]));
         moved += b.index != p;
       }
     }
@@ -83,7 +95,8 @@ TEST(ParticleRemoval, KeepsTheOthersAndMovesNoMoreThanItRemoves) {
   };
   const float cut = 0.08f;  // a slab of both materials, a tenth of each
   remove_and_check([=] FIRN_HD_LAMBDA(const ParticleView<float>& v, std::size_t p) { return v.x[0][p] < cut; });
-  // All of the first material: the second moves into its place.
+  // All of the first material, fewer particles than the second has: the second's last ones move
+  // into its place.
   remove_and_check([=] FIRN_HD_LAMBDA(const ParticleView<float>& v, std::size_t p) { return v.x[1][p] < 0.1f; });
   EXPECT_EQ(sim.material_range(first).end, 0u);
   EXPECT_GT(sim.material_range(second).end, 0u);

@@ -40,12 +40,15 @@ constexpr std::align_val_t kHostAlignment{64};
 // bytes, one of 20 MiB at most a tenth more.
 constexpr std::size_t kHugePage = std::size_t(2) << 20, kHugeFrom = std::size_t(1) << 20;
 constexpr std::size_t kStagger = 4096 + 64, kStaggers = 32;  // a line and a 4 KiB page apart
+// host_deallocate finds a buffer's offset in its page as its address modulo the page.
+static_assert(kStagger % 64 == 0 && kStagger * (kStaggers - 1) < kHugePage, "staggers within a page, by lines");
 
 inline std::size_t huge_bytes(std::size_t bytes) { return (bytes + kHugePage - 1) / kHugePage * kHugePage; }
 
 inline void* host_allocate(std::size_t bytes) {
 #if defined(__linux__)
   if (bytes >= kHugeFrom) {
+    if (bytes > SIZE_MAX - kStagger * kStaggers - 2 * kHugePage) throw std::bad_alloc();  // the sums below
     static std::atomic<std::size_t> buffers{0};
     const std::size_t offset = kStagger * (buffers++ % kStaggers), size = huge_bytes(offset + bytes);
     // Mapped with a page to spare, then trimmed to the aligned pages (mmap aligns to 4 KiB only).
