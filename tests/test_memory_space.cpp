@@ -114,11 +114,10 @@ TEST(MemorySpace, LargeHostBuffersLieInHugePagesWithStaggeredStarts) {
 #if !defined(__linux__)
   GTEST_SKIP() << "huge pages are asked for on Linux only";
 #endif
+  if (!backend::memory_detail::transparent_huge_pages()) GTEST_SKIP() << "transparent huge pages are off";
   constexpr std::size_t kBytes = std::size_t(3) << 19;  // 1.5 MiB: 393,216 floats
   std::set<std::uintptr_t> l1_sets, page_offsets;
   std::vector<char*> buffers;
-  // Where the kernel has transparent huge pages at all (any mode: the flag is the request).
-  const bool thp = bool(std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled"));
   for (int b = 0; b < 3; ++b) {
     char* p = static_cast<char*>(backend::kHostMemory.allocate(kBytes));
     buffers.push_back(p);
@@ -127,10 +126,8 @@ TEST(MemorySpace, LargeHostBuffersLieInHugePagesWithStaggeredStarts) {
     l1_sets.insert((a >> 6) % 64);                  // the set of a 64-set L1 (bits 6-11)
     page_offsets.insert(a % (std::size_t(2) << 20));  // where it starts in its 2 MiB page
     std::memset(p, b + 1, kBytes);                  // every byte can be written
-    if (thp) {  // asked for: MADV_HUGEPAGE
-      EXPECT_NE(mapping_flags(p).find(" hg"), std::string::npos) << mapping_flags(p);
-      EXPECT_NE(mapping_flags(p + kBytes - 1).find(" hg"), std::string::npos);
-    }
+    EXPECT_NE(mapping_flags(p).find(" hg"), std::string::npos) << mapping_flags(p);  // asked for: MADV_HUGEPAGE
+    EXPECT_NE(mapping_flags(p + kBytes - 1).find(" hg"), std::string::npos);
   }
   EXPECT_EQ(l1_sets.size(), 3u);  // the same particle of three columns in three different sets
   EXPECT_EQ(page_offsets.size(), 3u);

@@ -10,6 +10,8 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <new>
 
 #if defined(__linux__)
@@ -45,9 +47,24 @@ static_assert(kStagger % 64 == 0 && kStagger * (kStaggers - 1) < kHugePage, "sta
 
 inline std::size_t huge_bytes(std::size_t bytes) { return (bytes + kHugePage - 1) / kHugePage * kHugePage; }
 
+// Whether the kernel gives transparent huge pages to a region that asks (its mode is "always" or
+// "madvise", not "never"): where it does not, rounding buffers up to 2 MiB would cost memory for
+// nothing. Read once per process, so that a buffer is freed the way it was allocated.
+inline bool transparent_huge_pages() {
+  static const bool available = [] {
+    std::FILE* f = std::fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r");
+    if (f == nullptr) return false;
+    char mode[128] = {};
+    const std::size_t n = std::fread(mode, 1, sizeof mode - 1, f);
+    std::fclose(f);
+    return n > 0 && std::strstr(mode, "[never]") == nullptr;
+  }();
+  return available;
+}
+
 inline void* host_allocate(std::size_t bytes) {
 #if defined(__linux__)
-  if (bytes >= kHugeFrom) {
+  if (bytes >= kHugeFrom && transparent_huge_pages()) {
     if (bytes > SIZE_MAX - kStagger * kStaggers - 2 * kHugePage) throw std::bad_alloc();  // the sums below
     static std::atomic<std::size_t> buffers{0};
     const std::size_t offset = kStagger * (buffers++ % kStaggers), size = huge_bytes(offset + bytes);
@@ -67,7 +84,7 @@ inline void* host_allocate(std::size_t bytes) {
 
 inline void host_deallocate(void* p, std::size_t bytes) {
 #if defined(__linux__)
-  if (bytes >= kHugeFrom) {
+  if (bytes >= kHugeFrom && transparent_huge_pages()) {
     const std::size_t offset = reinterpret_cast<std::uintptr_t>(p) % kHugePage;
     munmap(static_cast<char*>(p) - offset, huge_bytes(offset + bytes));
     return;
