@@ -1,7 +1,7 @@
 // The permutations and moves that regroup the particle columns (ParticleStorage::gather and
-// ParticleStorage::move), built where the
-// columns live (on the GPU under the CUDA backend) so that adding and removing particles, as a
-// conveyor does every few steps, does not bring the columns to the host (issue 14, item 3):
+// ParticleStorage::move), built where the columns live (on the GPU under the CUDA backend) so that
+// adding and removing particles, as a conveyor does every few steps, does not bring the columns to
+// the host (issue 14, item 3):
 //   RunOrder           order[i] for a concatenation of contiguous runs of old indices (the
 //                      particles grouped by material after some were added);
 //   RefillClass, RefillList  a removal's holes in a material's range and the particles from its
