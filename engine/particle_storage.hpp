@@ -96,12 +96,7 @@ class ParticleStorage {
   void gather(const std::uint32_t* order, std::size_t count, const Backend& backend, bool stress = true) {
     GatherList<T> reals;
     GatherList<std::uint32_t> indices;
-#define FIRN_GATHER(name, n, kind, alloc, doc)                   \
-  if (stress || Attribute::name != Attribute::tau)               \
-    for (auto& col : name##_)                                    \
-      if (!col.empty()) list_of(reals, indices, col).add(col);
-    FIRN_PARTICLE_ATTRIBUTES(FIRN_GATHER)
-#undef FIRN_GATHER
+    list_columns(reals, indices, stress);
     gather_columns(reals, spare_real_, order, count, backend);
     gather_columns(indices, spare_index_, order, count, backend);
     size_ = count;
@@ -114,11 +109,7 @@ class ParticleStorage {
   void move(const std::uint32_t* moves, std::size_t count, const Backend& backend) {
     GatherList<T> reals;
     GatherList<std::uint32_t> indices;
-#define FIRN_MOVE_LIST(name, n, kind, alloc, doc) \
-  for (auto& col : name##_)                       \
-    if (!col.empty()) list_of(reals, indices, col).add(col);
-    FIRN_PARTICLE_ATTRIBUTES(FIRN_MOVE_LIST)
-#undef FIRN_MOVE_LIST
+    list_columns(reals, indices, /*stress=*/true);
     move_columns(reals, moves, count, backend);
     move_columns(indices, moves, count, backend);
   }
@@ -167,7 +158,7 @@ class ParticleStorage {
     dst = src[0].empty() ? nullptr : src[0].data();
   }
 
-  // The enabled columns of one scalar type, in attribute order, for gather_columns.
+  // The enabled columns of one scalar type, in attribute order, for gather_columns and move_columns.
   template <class S>
   struct GatherList {
     AlignedVector<S>* col[kMaxColumns] = {};
@@ -201,6 +192,16 @@ class ParticleStorage {
       backend.parallel_for("particles.gather", count, copy);
       for (int c = 0; c < copy.count; ++c) columns.col[first + c]->swap(spare[c]);
     }
+  }
+
+  // The enabled columns, by scalar type and in attribute order; the stress tau only with `stress`.
+  void list_columns(GatherList<T>& reals, GatherList<std::uint32_t>& indices, bool stress) {
+#define FIRN_LIST_COLUMNS(name, n, kind, alloc, doc)             \
+  if (stress || Attribute::name != Attribute::tau)               \
+    for (auto& col : name##_)                                    \
+      if (!col.empty()) list_of(reals, indices, col).add(col);
+    FIRN_PARTICLE_ATTRIBUTES(FIRN_LIST_COLUMNS)
+#undef FIRN_LIST_COLUMNS
   }
 
   template <class S, class Backend>
