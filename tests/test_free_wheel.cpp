@@ -63,8 +63,8 @@ TEST(FreeWheel, SettlesAtTheSameSlipFromRestAndFromTheGroundSpeed) {
 // steady and slower than the bed's waves (10 mph against a shear wave speed of 12 m/s), so nothing
 // is dissipated or radiated. The horizontal force it meets here is the discretisation's loss
 // (docs/contact.md, "The towed tire's rolling resistance: what is numerical"): 1.54% of the load at
-// this grid (dx 10 mm, one particle per cell), 1.00% at the thesis scene's. A unilateral contact
-// that held the bed where it leaves the tread (boundary "slip") doubles it, 2.73%.
+// this grid (dx 10 mm, one particle per cell), 1.00% at the thesis scene's. A bilateral contact,
+// which holds the bed where it leaves the tread (boundary "slip"), nearly doubles it: 2.73%.
 TEST(FreeWheel, AFrictionlessWheelOnAnElasticBedMeetsOnlyTheDiscretisationsSmallResistance) {
   const SceneSpec s = tire_scene({"materials.snow.sigma_y0=1e9", "tire.friction_law=coulomb", "tire.friction=0",
                                   "simulation.end_time=0.25 s"});
