@@ -33,6 +33,7 @@ struct ColliderBody {
   double load = 0;  // loaded_axle: downward force on the axle (N)
   bool free_spin = false;
   double inertia = 0;  // free_spin: moment of inertia about the z axis through the centre (kg m^2)
+  double penalty_stiffness = 1;  // contact penalty: omega = penalty_stiffness c / dx (kernels/step/penalty_contact.hpp)
 
   // Reaction of the grid on the collider in the last step (N, N m about collider.center), and its
   // time integral since the last reset_impulse().

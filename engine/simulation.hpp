@@ -67,6 +67,7 @@
 #include "kernels/step/mirror_walls.hpp"
 #include "kernels/step/load_work.hpp"
 #include "kernels/step/p2g_scatter.hpp"
+#include "kernels/step/penalty_contact.hpp"
 #include "kernels/step/volume_average.hpp"
 #include "kernels/transfer.hpp"
 
@@ -273,7 +274,12 @@ class Simulation {
       throw std::invalid_argument("at most one collider with contact = pooled");
     if (c.collider.contact == ColliderContact::pooled && c.collider.boundary != WallType::separate)
       throw std::invalid_argument("a pooled collider needs boundary separate");
+    if (c.collider.contact == ColliderContact::penalty && c.collider.boundary != WallType::separate)
+      throw std::invalid_argument("a penalty collider needs boundary separate: it only pushes");
+    if (c.collider.contact == ColliderContact::penalty && !(c.penalty_stiffness > 0))
+      throw std::invalid_argument("a penalty collider needs a positive penalty_stiffness");
     colliders_.push_back(c);
+    penalty_sums_.emplace_back();
     return int(colliders_.size()) - 1;
   }
 
@@ -374,11 +380,16 @@ class Simulation {
   // The next adaptive (or fixed) time step.
   double next_dt() const {
     if (config_.fixed_dt > 0) return config_.fixed_dt;
+    const double dt = config_.cfl * config_.dx / (wave_speed() + double(max_speed_));
+    return std::min(dt, config_.dt_max);
+  }
+
+  // The fastest P-wave speed of the materials with particles, as of the last stress pass.
+  double wave_speed() const {
     double c = 0;
     for (const auto& m : materials_)
       if (m.range.end > m.range.begin) c = std::max(c, m.wave_speed);
-    const double dt = config_.cfl * config_.dx / (c + double(max_speed_));
-    return std::min(dt, config_.dt_max);
+    return c;
   }
 
   void step() { step(next_dt()); }
@@ -621,6 +632,7 @@ class Simulation {
     bin<ShapeT>(dt);
     average_volume<ShapeT>();
     update_stress(dt);
+    push_penalty_colliders(dt);
     const GridGeometry<T> g = grid_.geometry();
     const ParticleView<T> pv = storage_.view();
     const bool load_work = budget_enabled_ && storage_.has(Attribute::body_accel);
@@ -850,15 +862,40 @@ class Simulation {
     up.pool_keep[c] = T(r.keep);
   }
 
+  // The penalty colliders' kicks (kernels/step/penalty_contact.hpp), posed at the step's start, with
+  // omega = penalty_stiffness c / dx; their reactions wait in penalty_sums_ for collect_reactions.
+  void push_penalty_colliders(T dt) {
+    const ParticleView<T> pv = storage_.view();
+    for (std::size_t c = 0; c < colliders_.size(); ++c) {
+      penalty_sums_[c] = {};
+      const ColliderBody& body = colliders_[c];
+      if (body.collider.contact != ColliderContact::penalty) continue;
+      const double omega = body.penalty_stiffness * wave_speed() / config_.dx;
+      if (omega * double(dt) > kPenaltyStableOmegaDt)
+        throw std::invalid_argument("a penalty collider's spring is unstable at this time step (omega dt = " +
+                                    std::to_string(omega * double(dt)) + "): lower penalty_stiffness, cfl or fixed_dt");
+      PenaltyContact<T> push{pv, collider_cast<T>(body.collider), {}, {}, T(omega * omega), dt};
+      push.collider.bounds(push.lo, push.hi);
+      for (int d = 0; d < 3; ++d) {  // a particle's radius is at most half a cell (one per cell)
+        push.lo[d] -= T(config_.dx);
+        push.hi[d] += T(config_.dx);
+      }
+      penalty_sums_[c] = backend_.parallel_reduce("contact.penalty", pv.n, DoubleSums<kPenaltySums>{}, push, Sum{});
+      if (budget_enabled_) budget_.colliders += penalty_sums_[c].v[kPenaltyWork];
+    }
+  }
+
   // Sums the per-block collider reactions and footprint columns of the last grid update (both
   // contact groups' with `contact`) on the backend (kernels/step/collider_sums.hpp).
   void collect_reactions(double dt, bool contact) {
     const std::size_t count = colliders_.size(), slots = grid_.active_count();
     const T* b = contact ? contact_.reactions_b.data() : nullptr;
     for (std::size_t c = 0; c < count; ++c) {
-      const DoubleSums<kReactionComponents> f = backend_.parallel_reduce(
+      DoubleSums<kReactionComponents> f = backend_.parallel_reduce(
           "reactions", slots, DoubleSums<kReactionComponents>{},
           SlotSums<T, kReactionComponents>{reactions_.data(), b, count * kReactionComponents, c * kReactionComponents}, Sum{});
+      if (colliders_[c].collider.contact == ColliderContact::penalty)
+        for (int i = 0; i < kReactionComponents; ++i) f.v[i] += penalty_sums_[c].v[kPenaltyForce + i];
       colliders_[c].add_reaction(f.v, f.v + 3, dt);
     }
     if (footprint_collider_ < 0) return;
@@ -964,6 +1001,7 @@ class Simulation {
   ParticleStorage<T> storage_;
   std::vector<Material> materials_;
   std::vector<ColliderBody> colliders_;
+  std::vector<DoubleSums<kPenaltySums>> penalty_sums_;  // per collider: this step's penalty force, torque and work
   // The last grid update's parameters: [0] the grid's, [1] contact group B's (a buffer, as kernels
   // read them through a pointer).
   AlignedVector<GridUpdateParams<T>> grid_params_ = AlignedVector<GridUpdateParams<T>>(2);

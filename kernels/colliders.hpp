@@ -38,9 +38,10 @@ namespace firn {
 
 enum class ColliderShape : std::uint8_t { plane, box, cylinder, tire };
 
-// How a collider's contact conditions are decided: node by node (`apply`, below) or pooled over
-// the contact of one stiff body (kernels/pooled_contact.hpp).
-enum class ColliderContact : std::uint8_t { nodes, pooled };
+// How a collider's contact conditions are decided: node by node (`apply`, below), pooled over
+// the contact of one stiff body (kernels/pooled_contact.hpp), or by a penalty force at the particles
+// that overlap it (kernels/step/penalty_contact.hpp), which leaves the grid nodes alone.
+enum class ColliderContact : std::uint8_t { nodes, pooled, penalty };
 
 // The surface skin in cells (see above): 1e-3 dx covers float rounding of coordinates up to about
 // 8000 cells from the grid's origin.

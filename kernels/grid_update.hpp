@@ -72,6 +72,7 @@ constexpr int kReactionComponents = 6;
 // corners. The same nodes take the same conditions; on a tire over a snow bed, most
 // blocks are far from the tire. With `margin` > 0 the box is widened by that many cells on every
 // side; the test is monotone in the box, so a wider box keeps every collider a narrower one keeps.
+// A penalty collider holds no node.
 template <class T>
 FIRN_HD std::uint32_t colliders_near_block(const int block[3], const GridUpdateParams<T>& p, int margin = 0) {
   static_assert(kMaxColliders <= 32, "one bit per collider");
@@ -84,6 +85,7 @@ FIRN_HD std::uint32_t colliders_near_block(const int block[3], const GridUpdateP
   std::uint32_t near = 0;
   for (int c = 0; c < p.collider_count; ++c) {
     const Collider<T>& k = p.colliders[c];
+    if (k.contact == ColliderContact::penalty) continue;  // it acts on particles, not nodes
     // A pooled collider also acts on the row outside it, up to half a cell (pooled_contact.hpp).
     const T reach = k.contact == ColliderContact::pooled ? T(0.5) * p.dx + skin : skin;
     T lo[3], hi[3];
@@ -297,7 +299,7 @@ FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, co
         sums.add(p, c, l, x, mass, before, v);
       }
       for (int c = 0; c < p.collider_count; ++c) {
-        if (!(near >> c & 1u) || p.colliders[c].contact == ColliderContact::pooled) continue;
+        if (!(near >> c & 1u) || p.colliders[c].contact != ColliderContact::nodes) continue;
         const T before[3] = {v[0], v[1], v[2]};
         if (p.colliders[c].apply(v, x, skin)) sums.add(p, c, l, x, mass, before, v);
       }

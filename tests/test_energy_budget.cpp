@@ -11,21 +11,13 @@
 #include "engine/particle_fill.hpp"
 #include "engine/simulation.hpp"
 #include "kernels/backend/openmp.hpp"
+#include "tests/open_box.hpp"
 
 namespace firn {
 namespace {
 
 double residual(const EnergyBudget& b, double initial, const Diagnostics& d) {
   return initial + b.gravity + b.colliders + b.loads - b.plastic - d.kinetic_energy - d.elastic_energy;
-}
-
-SimulationConfig open_box() {
-  SimulationConfig c;
-  c.domain_min = {0, 0, 0};
-  c.domain_max = {1, 1, 1};
-  c.dx = 0.05;
-  for (auto& w : c.walls) w = {WallType::none, 0, 0};
-  return c;
 }
 
 // An elastic ball in free fall, moving and, in `spin`, turning at 2 rad/s about z.

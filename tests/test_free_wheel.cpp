@@ -65,9 +65,13 @@ TEST(FreeWheel, SettlesAtTheSameSlipFromRestAndFromTheGroundSpeed) {
 // (docs/contact.md, "The towed tire's rolling resistance: what is numerical"): 1.54% of the load at
 // this grid (dx 10 mm, one particle per cell), 1.00% at the thesis scene's. A bilateral contact,
 // which holds the bed where it leaves the tread (boundary "slip"), nearly doubles it: 2.73%.
-TEST(FreeWheel, AFrictionlessWheelOnAnElasticBedMeetsOnlyTheDiscretisationsSmallResistance) {
-  const SceneSpec s = tire_scene({"materials.snow.sigma_y0=1e9", "tire.friction_law=coulomb", "tire.friction=0",
-                                  "simulation.end_time=0.25 s"});
+// The wheel's resistance coefficient -F_x / F_y over 0.15-0.25 s, towed without friction over the
+// elastic bed, with the overrides given.
+double elastic_bed_resistance(std::vector<std::string> overrides) {
+  for (const char* o : {"materials.snow.sigma_y0=1e9", "tire.friction_law=coulomb", "tire.friction=0",
+                        "simulation.end_time=0.25 s"})
+    overrides.push_back(o);
+  const SceneSpec s = tire_scene(overrides);
   SceneStepper<float, backend::OpenMP> stepper(s, backend::OpenMP(1));
   ColliderBody& tire = stepper.sim().collider(stepper.built().tire);
   while (stepper.before(0.15)) stepper.step_toward(0.15);  // past the start: the bed has passed under the tire
@@ -76,7 +80,19 @@ TEST(FreeWheel, AFrictionlessWheelOnAnElasticBedMeetsOnlyTheDiscretisationsSmall
   const double traction = tire.impulse[0] / tire.impulse_time, load = tire.impulse[1] / tire.impulse_time;
   EXPECT_GT(load, 1000);  // 25 mm into the elastic bed
   EXPECT_LT(traction, 0);
-  EXPECT_LT(-traction / load, 0.018);
+  return -traction / load;
+}
+
+TEST(FreeWheel, AFrictionlessWheelOnAnElasticBedMeetsOnlyTheDiscretisationsSmallResistance) {
+  EXPECT_LT(elastic_bed_resistance({}), 0.018);
+}
+
+// The penalty contact at the particles (`contact = "penalty"`, kernels/step/penalty_contact.hpp)
+// stores the energy it takes where the node contact's projection dissipates some at every step:
+// on the same bed the wheel meets 0.76% of the load against the node contact's 1.54% (and 0.52% against
+// 1.65% at the preview of scenes/tire_towed_on_snow.toml, 0.12% against 1.44% at its dx 8 mm).
+TEST(FreeWheel, APenaltyContactMeetsLessOfTheNumericalResistance) {
+  EXPECT_LT(elastic_bed_resistance({"tire.contact=penalty"}), 0.009);
 }
 
 // 4 kN on a 10 kg wheel, far more than 50 mm of the thesis' soft snow holds.

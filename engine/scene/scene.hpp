@@ -40,6 +40,7 @@ struct ColliderSpec {
   WallType boundary = WallType::sticky;
   Friction<double> friction{};
   ColliderContact contact = ColliderContact::nodes;
+  double penalty_stiffness = 1;  // contact = penalty: omega = penalty_stiffness c / dx
 };
 
 // The tire of the thesis' experiment (issue 5): a rigid tire collider with a tread pattern on an
@@ -62,6 +63,8 @@ struct TireSpec {
   double inertia = 0;  // free spin: moment of inertia about the axle (kg m^2)
   WallType boundary = WallType::separate;
   Friction<double> friction{};
+  ColliderContact contact = ColliderContact::nodes;  // nodes or penalty (a rigid tire's)
+  double penalty_stiffness = 1;
   bool rubber = false;      // body = "rubber": particles of `material` on a rigid rim
   int material = -1;        // rubber: its [materials.NAME] table (the tread's)
   int carcass_material = -1;  // rubber: the carcass band's table (default: material's)

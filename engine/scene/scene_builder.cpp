@@ -56,7 +56,9 @@ ColliderBody collider_body(const ColliderSpec& c) {
       break;
     }
   }
-  return ColliderBody(k);
+  ColliderBody body(k);
+  body.penalty_stiffness = c.penalty_stiffness;
+  return body;
 }
 
 Collider<double> tire_solid(const TireSpec& t) {
@@ -77,8 +79,11 @@ ColliderBody tire_body(const TireSpec& t) {
     k.radius = t.rim_radius;
     k.half[2] = 0.5 * t.width;
     k.boundary = WallType::sticky;
+  } else {
+    k.contact = t.contact;
   }
   ColliderBody body(k);
+  body.penalty_stiffness = t.penalty_stiffness;
   if (t.loaded) {
     body.motion = ColliderBody::Motion::loaded_axle;
     body.mass = t.mass;

@@ -690,6 +690,9 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
       c.boundary = WallType(r.choice_index("boundary") + 1);
       c.friction = read_friction(r);
       c.contact = ColliderContact(r.choice_index("contact"));
+      c.penalty_stiffness = r.number("penalty_stiffness");
+      if (c.contact == ColliderContact::penalty && c.boundary != WallType::separate)
+        r.fail("contact", "penalty needs boundary = \"separate\": it only pushes");
       if (c.contact == ColliderContact::pooled) {
         if (c.boundary != WallType::separate) r.fail("contact", "pooled needs boundary = \"separate\"");
         for (const ColliderSpec& earlier : s.colliders)
@@ -763,6 +766,12 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     }
     t.boundary = WallType(r.choice_index("boundary") + 1);
     t.friction = read_friction(r);
+    t.contact = r.choice_index("contact") == 1 ? ColliderContact::penalty : ColliderContact::nodes;
+    t.penalty_stiffness = r.number("penalty_stiffness");
+    if (t.contact == ColliderContact::penalty) {
+      if (t.rubber) r.fail("contact", "penalty is a rigid tire's: a rubber tire meets the snow through its particles");
+      if (t.boundary != WallType::separate) r.fail("contact", "penalty needs boundary = \"separate\": it only pushes");
+    }
     r.finish();
     for (int d = 0; d < 3; ++d) {
       const double reach = d == 2 ? 0.5 * t.width : t.radius;
@@ -836,6 +845,13 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     TableReader m(ctx, subtable(ctx, root, "metrics", empty), scene_section("metrics"), "metrics", mo);
     s.metrics.displaced_distance = m.number("displaced_distance");
     s.metrics.footprint = m.boolean("footprint");
+    if (s.metrics.footprint && s.tire && s.tire->contact == ColliderContact::penalty) {
+      if (m.has("footprint"))
+        m.fail("footprint", "is summed at the grid nodes the tire holds, and a tire with contact = \"penalty\" holds "
+                            "none: set footprint = false");
+      s.metrics.footprint = false;  // the default follows the contact
+      mo.insert_or_assign("footprint", false);
+    }
     s.metrics.fragments = m.boolean("fragments");
     s.metrics.fragment_link_cells = m.number("fragment_link_cells");
     s.metrics.fragment_min_particles = int(m.integer("fragment_min_particles"));

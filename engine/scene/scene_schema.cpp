@@ -16,6 +16,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 const std::vector<std::string> kBoundaries = {"sticky", "slip", "separate"};
 const std::vector<std::string> kWallTypes = {"none", "sticky", "slip", "separate"};
+const char* const kPenaltyStiffnessDoc =
+    "contact = penalty: the spring's angular frequency omega = penalty_stiffness c / dx, c the fastest "
+    "material's P-wave speed; stiffer springs let the particles overlap less (the overlap that carries a "
+    "pressure p is about p dx^2 / (rho c^2 penalty_stiffness^2 r), r half the particle spacing) and need "
+    "penalty_stiffness cfl < 1.9 to stay stable";
 
 KeySpec wall_face(const std::string& face) {
   return {face, K::choice, Q::dimensionless, "", false, "boundary on the " + face + " face (default: `type`)",
@@ -218,8 +223,12 @@ std::vector<SectionSpec> build_schema() {
                     "of nodes just outside with Coulomb's bound on the whole contact; with it the rolling cylinder of "
                     "`firn verify` converges and the sliding one stays within 0.15% (docs/contact.md). Not for "
                     "snow, nor for several bodies touching one collider; not with two contact groups or mirror "
-                    "walls",
-                    -kInf, kInf, false, {"nodes", "pooled"}},
+                    "walls; or penalty (boundary separate only): the nodes are left alone and every particle that "
+                    "overlaps the collider (a ball of half its rest spacing) is pushed out by a spring of its own "
+                    "mass, friction acting on that push; it stores the energy it takes, where the node contact "
+                    "dissipates some at every step (docs/contact.md, \"A penalty contact at the particles\")",
+                    -kInf, kInf, false, {"nodes", "pooled", "penalty"}},
+                   {"penalty_stiffness", K::number, Q::dimensionless, "1.0", false, kPenaltyStiffnessDoc, 0, 4, true},
                }});
   std::vector<std::string> treads;
   for (const TreadPattern& t : tread_patterns()) treads.push_back(t.name);
@@ -308,6 +317,13 @@ std::vector<SectionSpec> build_schema() {
                    {"friction", K::number, Q::dimensionless, "0.25", false,
                     "friction coefficient (velocity_dependent: mu0; the thesis: 0.25 on snow, range 0.12-0.39)", 0,
                     kInf},
+                   {"contact", K::choice, Q::dimensionless, "\"nodes\"", false,
+                    "a rigid tire's contact: nodes (every grid node inside takes `boundary`) or penalty (boundary "
+                    "separate only; see colliders): the particles that overlap the tire are pushed out by a spring, "
+                    "which carries much less of the grid's numerical rolling resistance (docs/contact.md). No "
+                    "footprint map with penalty (set [metrics] footprint = false)",
+                    -kInf, kInf, false, {"nodes", "penalty"}},
+                   {"penalty_stiffness", K::number, Q::dimensionless, "1.0", false, kPenaltyStiffnessDoc, 0, 4, true},
                }});
   s.push_back({"conveyor", false,
                "A snow bed on moving ground: the ground (y below `ground`) moves toward -x at `speed` carrying "

@@ -1,0 +1,179 @@
+// Penalty contact at the particles (kernels/step/penalty_contact.hpp, `contact = "penalty"`): the
+// kick of one particle against its closed form, friction on the push, the reaction's sums, and
+// an elastic block resting on a penalty ground with its whole weight on the springs.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "engine/materials.hpp"
+#include "engine/particle_fill.hpp"
+#include "engine/simulation.hpp"
+#include "kernels/backend/openmp.hpp"
+#include "tests/open_box.hpp"
+#include "kernels/step/penalty_contact.hpp"
+
+namespace firn {
+namespace {
+
+constexpr double kSpacing = 0.01;  // rest spacing: a particle is a ball of radius 5 mm
+constexpr double kRadius = 0.5 * kSpacing;
+
+// Particles in columns, for the kernel alone.
+struct Particles {
+  std::vector<double> x[3], v[3], mass, vol0;
+
+  void add(const double at[3], const double vel[3]) {
+    for (int d = 0; d < 3; ++d) {
+      x[d].push_back(at[d]);
+      v[d].push_back(vel[d]);
+    }
+    mass.push_back(2.0);
+    vol0.push_back(kSpacing * kSpacing * kSpacing);
+  }
+  ParticleView<double> view() {
+    ParticleView<double> pv{};
+    for (int d = 0; d < 3; ++d) {
+      pv.x[d] = x[d].data();
+      pv.v[d] = v[d].data();
+    }
+    pv.mass = mass.data();
+    pv.vol0 = vol0.data();
+    pv.n = mass.size();
+    return pv;
+  }
+};
+
+// The ground y <= 0, moving along x at `speed`, with Coulomb friction mu.
+PenaltyContact<double> ground_push(ParticleView<double> pv, double speed, double mu, double omega2, double dt) {
+  Collider<double> ground;
+  ground.shape = ColliderShape::plane;
+  ground.boundary = WallType::separate;
+  ground.friction = {FrictionLaw::coulomb, mu};
+  ground.contact = ColliderContact::penalty;
+  ground.velocity[0] = speed;
+  PenaltyContact<double> push{pv, ground, {}, {}, omega2, dt};
+  ground.bounds(push.lo, push.hi);
+  return push;
+}
+
+DoubleSums<kPenaltySums> run(const PenaltyContact<double>& push) {
+  DoubleSums<kPenaltySums> sums;
+  for (std::size_t p = 0; p < push.pv.n; ++p) push(p, sums);
+  return sums;
+}
+
+// An overlapping particle gains dt omega^2 (overlap) along the normal; one that does not is left
+// alone; the collider takes the opposite impulse, its torque about its centre, and does the work of
+// that impulse at its own velocity.
+TEST(PenaltyContact, PushesAnOverlappingParticleOutAndSumsTheReaction) {
+  Particles parts;
+  const double in[3] = {0.1, kRadius - 0.002, 0}, out[3] = {0.2, kRadius + 1e-4, 0};
+  const double falling[3] = {0, -0.3, 0};
+  parts.add(in, falling);
+  parts.add(out, falling);
+  const double omega2 = 4e6, dt = 1e-4, speed = 0.5;
+  const DoubleSums<kPenaltySums> sums = run(ground_push(parts.view(), speed, 0, omega2, dt));
+  const double push = dt * omega2 * 0.002;  // 0.8 m/s
+  EXPECT_NEAR(parts.v[1][0], -0.3 + push, 1e-12);
+  EXPECT_EQ(parts.v[0][0], 0);  // frictionless: the slip along the ground is kept
+  EXPECT_EQ(parts.v[1][1], -0.3);
+  const double f = -2.0 * push / dt;  // on the ground, downward
+  EXPECT_NEAR(sums.v[kPenaltyForce + 1], f, 1e-9 * std::abs(f));
+  EXPECT_EQ(sums.v[kPenaltyForce + 0], 0);
+  EXPECT_NEAR(sums.v[kPenaltyTorque + 2], 0.1 * f, 1e-9 * std::abs(f));  // r x f about the origin
+  EXPECT_EQ(sums.v[kPenaltyWork], 0);  // the ground moves across the push
+}
+
+// Friction acts on the push, Coulomb's |J_t| <= mu |J_n|: the slip relative to the moving ground
+// loses mu times the normal speed change, and a slip smaller than that stops without reversing.
+TEST(PenaltyContact, FrictionTakesAtMostMuTimesThePushAndNeverReversesTheSlip) {
+  Particles parts;
+  const double at[3] = {0, kRadius - 0.001, 0};
+  const double fast[3] = {2.0, 0, 0}, slow[3] = {0.55, 0, 0};
+  parts.add(at, fast);
+  parts.add(at, slow);
+  const double omega2 = 4e6, dt = 1e-4, speed = 0.5, mu = 0.5;
+  const DoubleSums<kPenaltySums> sums = run(ground_push(parts.view(), speed, mu, omega2, dt));
+  const double push = dt * omega2 * 0.001;  // 0.4 m/s: friction takes up to 0.2 m/s of slip
+  EXPECT_NEAR(parts.v[0][0], 2.0 - mu * push, 1e-12);
+  EXPECT_NEAR(parts.v[0][1], speed, 1e-12);  // a slip of 0.05 m/s stops at the ground's speed
+  EXPECT_NEAR(parts.v[1][0], push, 1e-12);
+  // The work of the impulse at the ground's velocity: 2 kg (-mu push - 0.05 m/s) x 0.5 m/s.
+  EXPECT_NEAR(sums.v[kPenaltyWork], 2.0 * (-mu * push - 0.05) * speed, 1e-12);
+}
+
+// An elastic block set down on a penalty ground (the plane y = 0.2), damped to rest: the ground
+// carries the block's weight, and its bottom row overlaps the ground by the spring's static
+// deflection, (weight per bottom particle) / (m omega^2), a small fraction of the particle's radius.
+TEST(PenaltyContact, AnElasticBlockRestsOnThePenaltyGroundWithItsWeightOnTheSprings) {
+  SimulationConfig c = open_box();
+  c.damping = 80;
+  Simulation<double, backend::OpenMP> sim(c);
+  const int m = sim.add_material({"block", "neo_hookean", 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
+  const double h = c.dx / 2, r = h / 2, ground = 0.2;
+  sim.add_particles(m, fill_box(c.domain_min, c.dx, 2, {0.4, ground, 0.4}, {0.6, ground + 0.1, 0.6}), {0, 0, 0},
+                    h * h * h);
+  Collider<double> plane;
+  plane.shape = ColliderShape::plane;
+  plane.center[1] = ground;
+  plane.boundary = WallType::separate;
+  plane.contact = ColliderContact::penalty;
+  const int g = sim.add_collider(plane);
+  sim.prepare();
+  sim.advance_to(0.4);
+
+  const ParticleView<double> pv = sim.particles();
+  double weight = 0, lowest = 1;
+  for (std::size_t p = 0; p < pv.n; ++p) {
+    weight += pv.mass[p] * 9.81;
+    lowest = std::min(lowest, pv.x[1][p]);
+  }
+  EXPECT_NEAR(-sim.collider(g).force[1], weight, 0.005 * weight);
+  std::vector<double> overlaps;  // of the bottom row, within half a spacing of the lowest particle
+  for (std::size_t p = 0; p < pv.n; ++p)
+    if (pv.x[1][p] < lowest + 0.5 * h) overlaps.push_back(ground + r - pv.x[1][p]);
+  double mean = 0;
+  for (double o : overlaps) mean += o / double(overlaps.size());
+  const double omega = sim.wave_speed() / c.dx;  // penalty_stiffness 1
+  const double deflection = weight / double(overlaps.size()) / (pv.mass[0] * omega * omega);
+  EXPECT_EQ(overlaps.size(), std::size_t(8 * 8));
+  EXPECT_NEAR(mean, deflection, 0.1 * deflection);
+  EXPECT_LT(deflection, 0.1 * r);
+}
+
+// A step too long for the spring (omega dt above 1.9) stops the run rather than explode.
+TEST(PenaltyContact, AStepTooLongForTheSpringIsRefused) {
+  SimulationConfig c = open_box();
+  c.fixed_dt = 0.02;
+  Simulation<double, backend::OpenMP> sim(c);
+  const int m = sim.add_material({"block", "neo_hookean", 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
+  sim.add_particles(m, fill_box(c.domain_min, c.dx, 2, {0.4, 0.2, 0.4}, {0.6, 0.3, 0.6}), {0, 0, 0},
+                    0.025 * 0.025 * 0.025);
+  Collider<double> plane;
+  plane.shape = ColliderShape::plane;
+  plane.center[1] = 0.2;
+  plane.boundary = WallType::separate;
+  plane.contact = ColliderContact::penalty;
+  sim.add_collider(plane);
+  sim.prepare();
+  EXPECT_THROW(sim.step(), std::invalid_argument);
+}
+
+TEST(PenaltyContact, NeedsASeparateBoundaryAndAPositiveStiffness) {
+  Simulation<double, backend::OpenMP> sim(open_box());
+  ColliderBody body;
+  body.collider.contact = ColliderContact::penalty;
+  body.collider.boundary = WallType::sticky;
+  EXPECT_THROW(sim.add_collider(body), std::invalid_argument);
+  body.collider.boundary = WallType::separate;
+  body.penalty_stiffness = 0;
+  EXPECT_THROW(sim.add_collider(body), std::invalid_argument);
+  body.penalty_stiffness = 1;
+  EXPECT_EQ(sim.add_collider(body), 0);
+}
+
+}  // namespace
+}  // namespace firn
