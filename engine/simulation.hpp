@@ -384,11 +384,12 @@ class Simulation {
     return std::min(dt, config_.dt_max);
   }
 
-  // The fastest P-wave speed of the materials with particles, as of the last stress pass.
-  double wave_speed() const {
+  // The fastest P-wave speed of the materials with particles, as of the last stress pass (`now`) or
+  // at rest.
+  double wave_speed(bool now = true) const {
     double c = 0;
     for (const auto& m : materials_)
-      if (m.range.end > m.range.begin) c = std::max(c, m.wave_speed);
+      if (m.range.end > m.range.begin) c = std::max(c, now ? m.wave_speed : m.info.wave_speed());
     return c;
   }
 
@@ -863,14 +864,16 @@ class Simulation {
   }
 
   // The penalty colliders' kicks (kernels/step/penalty_contact.hpp), posed at the step's start, with
-  // omega = penalty_stiffness c / dx; their reactions wait in penalty_sums_ for collect_reactions.
+  // omega = penalty_stiffness c / dx, c the materials' fastest P-wave speed at rest (fixed, so the
+  // spring does not follow the state of the particles that set the step's wave speed); their
+  // reactions wait in penalty_sums_ for collect_reactions.
   void push_penalty_colliders(T dt) {
     const ParticleView<T> pv = storage_.view();
     for (std::size_t c = 0; c < colliders_.size(); ++c) {
       penalty_sums_[c] = {};
       const ColliderBody& body = colliders_[c];
       if (body.collider.contact != ColliderContact::penalty) continue;
-      const double omega = body.penalty_stiffness * wave_speed() / config_.dx;
+      const double omega = body.penalty_stiffness * wave_speed(/*now=*/false) / config_.dx;
       if (omega * double(dt) > kPenaltyStableOmegaDt)
         throw std::invalid_argument("a penalty collider's spring is unstable at this time step (omega dt = " +
                                     std::to_string(omega * double(dt)) + "): lower penalty_stiffness, cfl or fixed_dt");

@@ -18,7 +18,7 @@ const std::vector<std::string> kBoundaries = {"sticky", "slip", "separate"};
 const std::vector<std::string> kWallTypes = {"none", "sticky", "slip", "separate"};
 const char* const kPenaltyStiffnessDoc =
     "contact = penalty: the spring's angular frequency omega = penalty_stiffness c / dx, c the fastest "
-    "material's P-wave speed; stiffer springs let the particles overlap less (the overlap that carries a "
+    "material's P-wave speed at rest; stiffer springs let the particles overlap less (the overlap that carries a "
     "pressure p is about p dx^2 / (rho c^2 penalty_stiffness^2 r), r half the particle spacing) and need "
     "penalty_stiffness cfl < 1.9 to stay stable";
 

@@ -14,9 +14,10 @@
 // applied as a kick before P2G with the particle's position at the step's start (symplectic Euler:
 // v += dt a(x_n), then the transfers move x with the new velocity), so the contact stores the
 // energy it takes and gives it back as the particle leaves. The engine sets omega = k c / dx, c the
-// fastest material's P-wave speed and k the collider's `penalty_stiffness`: the overlap that carries a
+// fastest material's P-wave speed at rest and k the collider's `penalty_stiffness`: the overlap that carries a
 // pressure p is then about p dx^2 / (rho c^2 k^2 r_p) (a strain of the material times a fraction of a
-// cell), and omega dt = k cfl c / (c + |v|) keeps the explicit spring stable for k cfl < 2.
+// cell), and omega dt <= k cfl c / (c_step + |v|) <= k cfl (the step's wave speed c_step is at
+// least about c) keeps the explicit spring stable for k cfl < 2.
 // Friction acts on the impulse (Coulomb's |J_t| <= mu |J_n|): after the normal kick, the velocity
 // relative to the collider's surface, v_c(x_p) = v + omega_c x (x_p - c), keeps its normal part and
 // loses at most mu(|v_t|) dt |a_p| of its tangential speed |v_t| (kernels/friction.hpp), never
