@@ -12,6 +12,7 @@
 #include "engine/particle_fill.hpp"
 #include "engine/simulation.hpp"
 #include "kernels/backend/openmp.hpp"
+#include "kernels/backend/serial.hpp"
 #include "tests/open_box.hpp"
 #include "kernels/step/penalty_contact.hpp"
 
@@ -105,25 +106,42 @@ TEST(PenaltyContact, FrictionTakesAtMostMuTimesThePushAndNeverReversesTheSlip) {
   EXPECT_NEAR(sums.v[kPenaltyWork], 2.0 * (-mu * push - 0.05) * speed, 1e-12);
 }
 
-// An elastic block set down on a penalty ground (the plane y = 0.2), damped to rest: the ground
-// carries the block's weight, and its bottom row overlaps the ground by the spring's static
-// deflection, (weight per bottom particle) / (m omega^2), a small fraction of the particle's radius.
-TEST(PenaltyContact, AnElasticBlockRestsOnThePenaltyGroundWithItsWeightOnTheSprings) {
-  SimulationConfig c = open_box();
-  c.damping = 80;
-  Simulation<double, backend::OpenMP> sim(c);
+constexpr double kGround = 0.2;
+
+// An elastic block (eight by four by eight particles, two per cell) set down on a penalty ground,
+// the plane y = kGround, with mass-proportional damping; the ground is collider 0.
+template <class T, class Backend>
+void set_block_on_penalty_ground(Simulation<T, Backend>& sim) {
+  const SimulationConfig& c = sim.config();
   const int m = sim.add_material({"block", "neo_hookean", 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
-  const double h = c.dx / 2, r = h / 2, ground = 0.2;
-  sim.add_particles(m, fill_box(c.domain_min, c.dx, 2, {0.4, ground, 0.4}, {0.6, ground + 0.1, 0.6}), {0, 0, 0},
+  const double h = c.dx / 2;
+  sim.add_particles(m, fill_box(c.domain_min, c.dx, 2, {0.4, kGround, 0.4}, {0.6, kGround + 0.1, 0.6}), {0, 0, 0},
                     h * h * h);
   Collider<double> plane;
   plane.shape = ColliderShape::plane;
-  plane.center[1] = ground;
+  plane.center[1] = kGround;
   plane.boundary = WallType::separate;
   plane.contact = ColliderContact::penalty;
-  const int g = sim.add_collider(plane);
+  sim.add_collider(plane);
   sim.prepare();
+}
+
+SimulationConfig damped_box() {
+  SimulationConfig c = open_box();
+  c.damping = 80;
+  return c;
+}
+
+// Damped to rest, the block's weight is on the ground, and its bottom row overlaps the ground by the
+// spring's static deflection, (weight per bottom particle) / (m omega^2), a small fraction of the
+// particle's radius.
+TEST(PenaltyContact, AnElasticBlockRestsOnThePenaltyGroundWithItsWeightOnTheSprings) {
+  const SimulationConfig c = damped_box();
+  Simulation<double, backend::OpenMP> sim(c);
+  set_block_on_penalty_ground(sim);
   sim.advance_to(0.4);
+  const int g = 0;
+  const double h = c.dx / 2, r = h / 2, ground = kGround;
 
   const ParticleView<double> pv = sim.particles();
   double weight = 0, lowest = 1;
@@ -144,21 +162,36 @@ TEST(PenaltyContact, AnElasticBlockRestsOnThePenaltyGroundWithItsWeightOnTheSpri
   EXPECT_LT(deflection, 0.1 * r);
 }
 
+// The pushes depend on each particle alone and their sums are reduced in a fixed order, so the run,
+// the ground's force included, is the same on one thread, two, and the serial backend.
+TEST(PenaltyContact, TheRunIsTheSameOnAnyThreadCountAndBackend) {
+  Simulation<float, backend::OpenMP> one(damped_box(), backend::OpenMP(1)), two(damped_box(), backend::OpenMP(2));
+  Simulation<float, backend::Serial> serial(damped_box());
+  set_block_on_penalty_ground(one);
+  set_block_on_penalty_ground(two);
+  set_block_on_penalty_ground(serial);
+  for (int s = 0; s < 40; ++s) {
+    one.step();
+    two.step();
+    serial.step();
+  }
+  EXPECT_LT(one.collider(0).force[1], 0);  // the block has landed on the springs
+  EXPECT_EQ(one.collider(0).force[1], two.collider(0).force[1]);
+  EXPECT_EQ(one.collider(0).force[1], serial.collider(0).force[1]);
+  const ParticleView<float> a = one.particles(), b = two.particles(), c = serial.particles();
+  for (std::size_t p = 0; p < a.n; ++p)
+    for (int d = 0; d < 3; ++d) {
+      EXPECT_EQ(a.x[d][p], b.x[d][p]);
+      EXPECT_EQ(a.x[d][p], c.x[d][p]);
+    }
+}
+
 // A step too long for the spring (omega dt above 1.9) stops the run rather than explode.
 TEST(PenaltyContact, AStepTooLongForTheSpringIsRefused) {
   SimulationConfig c = open_box();
-  c.fixed_dt = 0.02;
+  c.fixed_dt = 0.02;  // omega dt = 4.6 for the block's c / dx = 232 1/s
   Simulation<double, backend::OpenMP> sim(c);
-  const int m = sim.add_material({"block", "neo_hookean", 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
-  sim.add_particles(m, fill_box(c.domain_min, c.dx, 2, {0.4, 0.2, 0.4}, {0.6, 0.3, 0.6}), {0, 0, 0},
-                    0.025 * 0.025 * 0.025);
-  Collider<double> plane;
-  plane.shape = ColliderShape::plane;
-  plane.center[1] = 0.2;
-  plane.boundary = WallType::separate;
-  plane.contact = ColliderContact::penalty;
-  sim.add_collider(plane);
-  sim.prepare();
+  set_block_on_penalty_ground(sim);
   EXPECT_THROW(sim.step(), std::invalid_argument);
 }
 
