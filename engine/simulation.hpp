@@ -625,7 +625,8 @@ class Simulation {
   }
 
   // One step: bin -> F-bar volume averaging (nearly incompressible materials only) -> constitutive
-  // update -> P2G -> grid update -> G2P with the stability guard. With two contact groups, each
+  // update -> the penalty colliders' pushes (only where a collider has contact = penalty) -> P2G ->
+  // grid update -> G2P with the stability guard. With two contact groups, each
   // group has its own F-bar, P2G, grid update and G2P, and between the grid updates and G2P the
   // contact update joins them (kernels/step/contact_update.hpp).
   template <class ShapeT, Transfer kTransfer>
@@ -633,12 +634,12 @@ class Simulation {
     bin<ShapeT>(dt);
     average_volume<ShapeT>();
     update_stress(dt);
-    push_penalty_colliders(dt);
     const GridGeometry<T> g = grid_.geometry();
     const ParticleView<T> pv = storage_.view();
     const bool load_work = budget_enabled_ && storage_.has(Attribute::body_accel);
     if (load_work)  // half of it with the velocities at the step's start, half at its end
       budget_.loads += backend_.parallel_reduce("energy_budget.loads", pv.n, 0.0, LoadWork<T>{pv, dt}, Sum{});
+    push_penalty_colliders(dt);
     const SparseGridView<T> gv = grid_.view();
     const bool contact = contact_active();
     const BinningView bins = contact ? group_bins(0) : binning_.view();

@@ -95,6 +95,13 @@ TEST(FreeWheel, APenaltyContactMeetsLessOfTheNumericalResistance) {
   EXPECT_LT(elastic_bed_resistance({"tire.contact=penalty"}), 0.009);
 }
 
+// The footprint map is summed at the nodes the tire holds, and a penalty tire holds none: its
+// footprint defaults to off (an explicit `footprint = true` is refused: tests/scenes/malformed).
+TEST(FreeWheel, APenaltyTiresFootprintMapDefaultsToOff) {
+  EXPECT_TRUE(tire_scene({}).metrics.footprint);
+  EXPECT_FALSE(tire_scene({"tire.contact=penalty"}).metrics.footprint);
+}
+
 // 4 kN on a 10 kg wheel, far more than 50 mm of the thesis' soft snow holds.
 TEST(FreeWheel, ALoadedWheelTheSnowCannotCarryStopsAtTheGround) {
   const SceneSpec s =

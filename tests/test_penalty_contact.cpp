@@ -104,18 +104,23 @@ TEST(PenaltyContact, FrictionTakesAtMostMuTimesThePushAndNeverReversesTheSlip) {
   EXPECT_NEAR(parts.v[1][0], push, 1e-12);
   // The work of the impulse at the ground's velocity: 2 kg (-mu push - 0.05 m/s) x 0.5 m/s.
   EXPECT_NEAR(sums.v[kPenaltyWork], 2.0 * (-mu * push - 0.05) * speed, 1e-12);
+  // Both particles sit at x = 0, y = r - 1 mm: the torque about the ground's origin is -y f_x.
+  const double fx = sums.v[kPenaltyForce + 0], y = kRadius - 0.001;
+  EXPECT_GT(fx, 0);  // friction drags the ground along the particles' slip
+  EXPECT_NEAR(sums.v[kPenaltyTorque + 2], -y * fx, 1e-12 * std::abs(fx));
 }
 
 constexpr double kGround = 0.2;
 
-// An elastic block (eight by four by eight particles, two per cell) set down on a penalty ground,
-// the plane y = kGround, with mass-proportional damping; the ground is collider 0.
+// An elastic block 0.1 high and 2 half_width wide and deep (with two particles per cell and the
+// default width, eight by four by eight particles) set down on a penalty ground, the plane
+// y = kGround; the ground is collider 0.
 template <class T, class Backend>
-void set_block_on_penalty_ground(Simulation<T, Backend>& sim) {
+void set_block_on_penalty_ground(Simulation<T, Backend>& sim, int per_cell = 2, double half_width = 0.1) {
   const SimulationConfig& c = sim.config();
   const int m = sim.add_material({"block", "neo_hookean", 1000, ElasticModuli::from_E_nu(1e5, 0.3)});
-  const double h = c.dx / 2;
-  sim.add_particles(m, fill_box(c.domain_min, c.dx, 2, {0.4, kGround, 0.4}, {0.6, kGround + 0.1, 0.6}), {0, 0, 0},
+  const double h = c.dx / per_cell, lo = 0.5 - half_width, hi = 0.5 + half_width;
+  sim.add_particles(m, fill_box(c.domain_min, c.dx, per_cell, {lo, kGround, lo}, {hi, kGround + 0.1, hi}), {0, 0, 0},
                     h * h * h);
   Collider<double> plane;
   plane.shape = ColliderShape::plane;
@@ -163,13 +168,15 @@ TEST(PenaltyContact, AnElasticBlockRestsOnThePenaltyGroundWithItsWeightOnTheSpri
 }
 
 // The pushes depend on each particle alone and their sums are reduced in a fixed order, so the run,
-// the ground's force included, is the same on one thread, two, and the serial backend.
+// the ground's force included, is the same on one thread, two, and the serial backend. The block
+// (12,800 particles, four per cell) spans several of the reductions' chunks.
 TEST(PenaltyContact, TheRunIsTheSameOnAnyThreadCountAndBackend) {
   Simulation<float, backend::OpenMP> one(damped_box(), backend::OpenMP(1)), two(damped_box(), backend::OpenMP(2));
   Simulation<float, backend::Serial> serial(damped_box());
-  set_block_on_penalty_ground(one);
-  set_block_on_penalty_ground(two);
-  set_block_on_penalty_ground(serial);
+  set_block_on_penalty_ground(one, 4, 0.25);
+  set_block_on_penalty_ground(two, 4, 0.25);
+  set_block_on_penalty_ground(serial, 4, 0.25);
+  ASSERT_GT(one.particles().n, 3 * backend::kReduceGrain);
   for (int s = 0; s < 40; ++s) {
     one.step();
     two.step();

@@ -126,10 +126,14 @@ BuiltScene build_scene(const SceneSpec& scene, Simulation<T, Backend>& sim) {
     std::vector<Point> bed = Conveyor(scene, c).initial_bed();
     if (scene.tire) {  // the tire starts pressed into the snow: no particles inside it
       const Collider<double> tire = tire_solid(*scene.tire);
+      // A penalty tire pushes a particle from half a spacing off (kernels/step/penalty_contact.hpp):
+      // none starts within that, which would start the run with the spring compressed.
+      const double clear =
+          scene.tire->contact == ColliderContact::penalty ? 0.5 * scene.config.dx / scene.per_axis() : 0.0;
       bed.erase(std::remove_if(bed.begin(), bed.end(),
                                [&](const Point& p) {
                                  double n[3];
-                                 return tire.distance(p.data(), n) <= 0;
+                                 return tire.distance(p.data(), n) <= clear;
                                }),
                 bed.end());
     }

@@ -13,6 +13,7 @@
 #include "engine/material_catalog.hpp"
 #include "engine/scene/scene_schema.hpp"
 #include "kernels/step/mirror_walls.hpp"
+#include "kernels/step/penalty_contact.hpp"
 
 namespace firn {
 namespace {
@@ -313,6 +314,18 @@ Friction<double> read_friction(TableReader& r) {
   f.law = FrictionLaw(r.choice_index("friction_law"));
   f.mu = r.number("friction");
   return f;
+}
+
+// A penalty contact (kernels/step/penalty_contact.hpp) only pushes, and its spring, omega dt up to
+// penalty_stiffness cfl, must stay below the engine's bound.
+void check_penalty(TableReader& r, WallType boundary, double stiffness, double cfl) {
+  if (boundary != WallType::separate) r.fail("contact", "penalty needs boundary = \"separate\": it only pushes");
+  if (stiffness * cfl >= kPenaltyStableOmegaDt) {
+    std::ostringstream m;
+    m << "times simulation.cfl is " << stiffness * cfl << ", and must stay below " << kPenaltyStableOmegaDt
+      << " for the spring to be stable";
+    r.fail("penalty_stiffness", m.str());
+  }
 }
 
 BodyShape read_shape(const Context& ctx, TableReader& r, toml::table& out, const std::string& prefix) {
@@ -691,8 +704,7 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
       c.friction = read_friction(r);
       c.contact = ColliderContact(r.choice_index("contact"));
       c.penalty_stiffness = r.number("penalty_stiffness");
-      if (c.contact == ColliderContact::penalty && c.boundary != WallType::separate)
-        r.fail("contact", "penalty needs boundary = \"separate\": it only pushes");
+      if (c.contact == ColliderContact::penalty) check_penalty(r, c.boundary, c.penalty_stiffness, s.config.cfl);
       if (c.contact == ColliderContact::pooled) {
         if (c.boundary != WallType::separate) r.fail("contact", "pooled needs boundary = \"separate\"");
         for (const ColliderSpec& earlier : s.colliders)
@@ -770,7 +782,7 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     t.penalty_stiffness = r.number("penalty_stiffness");
     if (t.contact == ColliderContact::penalty) {
       if (t.rubber) r.fail("contact", "penalty is a rigid tire's: a rubber tire meets the snow through its particles");
-      if (t.boundary != WallType::separate) r.fail("contact", "penalty needs boundary = \"separate\": it only pushes");
+      check_penalty(r, t.boundary, t.penalty_stiffness, s.config.cfl);
     }
     r.finish();
     for (int d = 0; d < 3; ++d) {

@@ -19,7 +19,7 @@ const std::vector<std::string> kWallTypes = {"none", "sticky", "slip", "separate
 const char* const kPenaltyStiffnessDoc =
     "contact = penalty: the spring's angular frequency omega = penalty_stiffness c / dx, c the fastest "
     "material's P-wave speed at rest; stiffer springs let the particles overlap less (the overlap that carries a "
-    "pressure p is about p dx^2 / (rho c^2 penalty_stiffness^2 r), r half the particle spacing) and need "
+    "pressure p is about p dx^2 / (rho c^2 penalty_stiffness^2 h), h the particle spacing) and need "
     "penalty_stiffness cfl < 1.9 to stay stable";
 
 KeySpec wall_face(const std::string& face) {
@@ -320,8 +320,9 @@ std::vector<SectionSpec> build_schema() {
                    {"contact", K::choice, Q::dimensionless, "\"nodes\"", false,
                     "a rigid tire's contact: nodes (every grid node inside takes `boundary`) or penalty (boundary "
                     "separate only; see colliders): the particles that overlap the tire are pushed out by a spring, "
-                    "which carries much less of the grid's numerical rolling resistance (docs/contact.md). No "
-                    "footprint map with penalty (set [metrics] footprint = false)",
+                    "which carries much less of the grid's numerical rolling resistance (docs/contact.md); for "
+                    "eight particles per cell. No footprint map with penalty ([metrics] footprint defaults to "
+                    "false)",
                     -kInf, kInf, false, {"nodes", "penalty"}},
                    {"penalty_stiffness", K::number, Q::dimensionless, "1.0", false, kPenaltyStiffnessDoc, 0, 4, true},
                }});

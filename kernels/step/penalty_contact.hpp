@@ -15,9 +15,11 @@
 // v += dt a(x_n), then the transfers move x with the new velocity), so the contact stores the
 // energy it takes and gives it back as the particle leaves. The engine sets omega = k c / dx, c the
 // fastest material's P-wave speed at rest and k the collider's `penalty_stiffness`: the overlap that carries a
-// pressure p is then about p dx^2 / (rho c^2 k^2 r_p) (a strain of the material times a fraction of a
-// cell), and omega dt <= k cfl c / (c_step + |v|) <= k cfl (the step's wave speed c_step is at
-// least about c) keeps the explicit spring stable for k cfl < 2.
+// pressure p is then about p dx^2 / (rho c^2 k^2 h) for a particle spacing h = 2 r_p (a strain of
+// the material times a fraction of a cell), and omega dt <= k cfl c / (c_step + |v|) <= k cfl (the
+// step's wave speed c_step is at least about c) keeps the explicit spring stable, omega dt < 2; the
+// engine refuses a step with omega dt above kPenaltyStableOmegaDt, the scene reader a
+// penalty_stiffness cfl that reaches it.
 // Friction acts on the impulse (Coulomb's |J_t| <= mu |J_n|): after the normal kick, the velocity
 // relative to the collider's surface, v_c(x_p) = v + omega_c x (x_p - c), keeps its normal part and
 // loses at most mu(|v_t|) dt |a_p| of its tangential speed |v_t| (kernels/friction.hpp), never
