@@ -2,7 +2,9 @@
 // the z axis through the origin, the tire rolls in the x-y plane (issue 5; the thesis' section
 // 4.3.2 and Figure 4.8 describe the three patterns, engine/tread_patterns.cpp draws them).
 //
-// The solid is the union of (a tire without blocks is the plain cylinder r <= R, |z| <= W/2)
+// The solid is the union of (a tire without blocks is the plain cylinder r <= R, |z| <= W/2, its
+// shoulders rounded to `shoulder`: the cylinder r <= R - s, |z| <= W/2 - s grown by a ball of radius
+// s, whose distance is that cylinder's less s, exactly)
 //   the carcass: the cylinder r <= R - depth, |z| <= W/2 (r = sqrt(x^2 + y^2));
 //   the tread:   the points of the band R - depth <= r <= R, |z| <= W/2 whose unrolled coordinates
 //                (arc length s = r phi along the circumference, lateral z) fall inside one of the
@@ -81,6 +83,7 @@ struct TireShape {
   T width = T(0.125);       // W
   T tread_depth = T(0.012);
   int pitches = 12;
+  T shoulder = T(0);  // a slick tire's shoulder radius s (0: square shoulders)
   int block_count = 0;
   TreadBlock<T> blocks[kMaxTreadBlocks];
 
@@ -101,23 +104,24 @@ struct TireShape {
     const T zs = y[2] < T(0) ? T(-1) : T(1);
     const T half = T(0.5) * width, inner = radius - tread_depth;
 
-    // A capped cylinder of radius `rad` and half width `half`: exact distance and normal.
-    auto cylinder = [&](T rad, T out[3]) {
-      const T qr = r - rad, qz = std::fabs(y[2]) - half;
+    // A capped cylinder of radius `rad` and half width `half`, its edges rounded to `round`: exact
+    // distance and normal.
+    auto cylinder = [&](T rad, T out[3], T round) {
+      const T qr = r - (rad - round), qz = std::fabs(y[2]) - (half - round);
       if (qr > T(0) || qz > T(0)) {
         const T a = qr > T(0) ? qr : T(0), b = qz > T(0) ? qz : T(0), len = std::sqrt(a * a + b * b);
         for (int d = 0; d < 3; ++d) out[d] = (a * er[d]) / len;
         out[2] += b * zs / len;
-        return len;
+        return len - round;
       }
       for (int d = 0; d < 3; ++d) out[d] = qr > qz ? er[d] : T(0);
       if (!(qr > qz)) out[2] = zs;
-      return qr > qz ? qr : qz;
+      return (qr > qz ? qr : qz) - round;
     };
 
-    const T bound = cylinder(radius, n);
+    const T bound = cylinder(radius, n, block_count == 0 ? shoulder : T(0));
     if (bound > kNear * tread_depth || block_count == 0) return bound;  // far away, or a slick tire
-    T best = cylinder(inner, n);
+    T best = cylinder(inner, n, T(0));
 
     // The tread: each block's polygon in the unrolled plane, extruded over r <= R. Below the band
     // the extrusion lies inside the carcass, so the union is unchanged, and a point in a block
@@ -175,6 +179,7 @@ TireShape<T> tire_shape_cast(const TireShape<U>& t) {
   o.width = T(t.width);
   o.tread_depth = T(t.tread_depth);
   o.pitches = t.pitches;
+  o.shoulder = T(t.shoulder);
   o.block_count = t.block_count;
   for (int b = 0; b < kMaxTreadBlocks; ++b)
     for (int v = 0; v < t.blocks[b].vertex_count; ++v) o.blocks[b].add_vertex(T(t.blocks[b].u[v]), T(t.blocks[b].w[v]));

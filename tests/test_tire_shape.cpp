@@ -90,6 +90,31 @@ void expect_skipping_changes_nothing() {
   }
 }
 
+// A slick tire with rounded shoulders is the square one shrunk by s and grown by a ball of radius s:
+// beside the rounded edge the distance is the distance to the edge's circle less s, along the ray
+// from it; across the tread and the sides it is the square tire's.
+TEST(TireShape, ARoundedShoulderIsAQuarterCircleOfItsRadius) {
+  TireShape<double> t = tire("slick");
+  const TireShape<double> square = t;
+  t.shoulder = 0.01;
+  const double edge_r = t.radius - t.shoulder, edge_z = 0.5 * t.width - t.shoulder, phi = kPi / 4;
+  for (double d : {0.02, 0.01, 0.005, 0.0}) {  // outside, on the surface, inside, the circle's centre
+    const double y[3] = {edge_r + d * std::cos(phi), 0, edge_z + d * std::sin(phi)};
+    double n[3];
+    EXPECT_NEAR(t.distance(y, n), d - t.shoulder, 1e-12);
+    if (d > 0) {
+      EXPECT_NEAR(n[0], std::cos(phi), 1e-12);
+      EXPECT_NEAR(n[2], std::sin(phi), 1e-12);
+    }
+  }
+  const double far_corner[3] = {edge_r + 0.02 * std::cos(phi), 0, edge_z + 0.02 * std::sin(phi)};
+  double n[3];
+  EXPECT_GT(t.distance(far_corner, n), square.distance(far_corner, n) + 0.004);  // the square corner is nearer
+  const double below_tread[3] = {0, -(t.radius + 0.003), 0.01}, beside[3] = {0.05, 0.1, 0.5 * t.width + 0.004};
+  EXPECT_NEAR(t.distance(below_tread, n), square.distance(below_tread, n), 1e-15);
+  EXPECT_NEAR(t.distance(beside, n), square.distance(beside, n), 1e-15);
+}
+
 TEST(TireShape, SkippingFarBlocksChangesNothing) {
   expect_skipping_changes_nothing<float>();
   expect_skipping_changes_nothing<double>();

@@ -56,6 +56,7 @@ struct TireSpec {
   Point center = {0, 0, 0};
   double radius = 0, width = 0, tread_depth = 0;
   int pitches = 0;
+  double shoulder = 0;  // a slick tire's shoulder radius (0: square)
   double speed = 0;  // surface speed (m/s); a free spin's at t = 0: the conveyor's speed (0 without one)
   bool loaded = false;
   double load = 0, mass = 0;  // loaded axle; the mass also for a free spin

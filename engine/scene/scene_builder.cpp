@@ -67,6 +67,7 @@ Collider<double> tire_solid(const TireSpec& t) {
   k.boundary = t.boundary;
   k.friction = t.friction;
   k.tire = make_tire_shape(t.tread, t.radius, t.width, t.tread_depth, t.pitches);
+  k.tire.shoulder = t.shoulder;
   for (int d = 0; d < 3; ++d) k.center[d] = t.center[d];
   k.angular_velocity[2] = -t.speed / t.radius;  // the tread at the bottom moves toward -x
   return k;

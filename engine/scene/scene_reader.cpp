@@ -734,6 +734,10 @@ LoadedScene read_scene(const std::string& path, toml::table root, const SceneOpt
     t.tread_depth = r.number("tread_depth");
     if (!(t.tread_depth < t.radius)) r.fail("tread_depth", "must be less than the radius");
     t.pitches = int(r.integer("pitches"));
+    t.shoulder = r.number("shoulder");
+    if (t.shoulder > 0 && t.tread != "slick") r.fail("shoulder", "rounds a slick tire's shoulders: set tread = \"slick\"");
+    if (!(t.shoulder < 0.5 * t.width && t.shoulder < t.radius))
+      r.fail("shoulder", "must be less than half the width and less than the radius");
     const std::string axle = r.choice("axle"), spin = r.choice("spin"), body = r.choice("body");
     r.set_filter(axle);
     r.add_filter(spin);

@@ -249,6 +249,11 @@ std::vector<SectionSpec> build_schema() {
                    {"tread_depth", K::number, Q::length, "0.012", false, "depth of the grooves", 0, kInf},
                    {"pitches", K::integer, Q::dimensionless, "12", false,
                     "repetitions of the pattern around the circumference", 1, 200},
+                   {"shoulder", K::number, Q::length, "0.0", false,
+                    "a slick tire's shoulder radius: the edges where the tread meets the sides rounded (0: square, "
+                    "the thesis' drawing). A square shoulder cutting an elastic bed is a corner the grid resolves "
+                    "and loses energy at, more the finer the grid (docs/contact.md)",
+                    0, kInf},
                    {"body", K::choice, Q::dimensionless, "\"rigid\"", false,
                     "rigid (a collider) or rubber: the tread and a carcass band below it filled with particles of "
                     "`material` (and `carcass_material`), driven through a rigid rim (a sticky cylinder under the "
