@@ -39,8 +39,7 @@ FIRN_HD void apply_wall(T v[3], const T n[3], WallType type, const Friction<T>& 
   T vt[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
   if (vn < T(0) && friction.mu > T(0)) {
     const T vt_norm = std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]);
-    const T scale = vt_norm > T(0) ? T(1) - friction.coefficient(vt_norm) * (-vn) / vt_norm : T(0);
-    const T keep = scale > T(0) ? scale : T(0);
+    const T keep = friction.slip_kept(vt_norm, -vn);
     for (int d = 0; d < 3; ++d) vt[d] *= keep;
   }
   for (int d = 0; d < 3; ++d) v[d] = vt[d];

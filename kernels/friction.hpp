@@ -27,6 +27,14 @@ struct Friction {
     const T v = T(1000) * slip;  // mm/s
     return mu * std::pow(T(12101) * v / (v * v + T(12100)), T(0.17));
   }
+
+  // The share of a tangential slip speed `slip` that friction leaves after a normal speed change
+  // `normal_change` >= 0, Coulomb on the impulse (|dv_t| <= mu |dv_n|, never reversing the slip):
+  // max(0, 1 - mu(slip) normal_change / slip), 0 for no slip.
+  FIRN_HD T slip_kept(T slip, T normal_change) const {
+    const T scale = slip > T(0) ? T(1) - coefficient(slip) * normal_change / slip : T(0);
+    return scale > T(0) ? scale : T(0);
+  }
 };
 
 }  // namespace firn

@@ -67,8 +67,8 @@ struct PenaltyContact {
     T vt[3] = {rel[0] - vn * n[0], rel[1] - vn * n[1], rel[2] - vn * n[2]};
     const T slip = std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]);
     if (collider.friction.mu > T(0) && slip > T(0)) {
-      const T keep = T(1) - collider.friction.coefficient(slip) * push / slip;
-      for (int d = 0; d < 3; ++d) vt[d] *= keep > T(0) ? keep : T(0);
+      const T keep = collider.friction.slip_kept(slip, push);
+      for (int d = 0; d < 3; ++d) vt[d] *= keep;
     }
     const double m = double(pv.mass[p]);
     double f[3];
