@@ -73,6 +73,34 @@ TEST(SnowCamClay, ShearOnTheDrySideDilatesAndSoftens) {
   EXPECT_NEAR(m.yield_function(F, s), 0, 1e-9 * p0 * p0);
 }
 
+// Pulled along x with the lateral contraction of uniaxial stress (nu = 0.2): fresh snow's centre lies
+// in tension (beta 2.175 > 1) and the trial between it and p = 0, where a return toward the centre
+// would compact the snow. From the origin it dilates, and further pulling takes all its strength
+// (softening_strain 1%): the stress falls to zero, the bar has broken.
+TEST(SnowCamClay, UniaxialTensionDilatesAndBreaksWhereTheCentreIsInTension) {
+  const SnowCamClay<double> m = fresh_snow<double>();
+  const auto pulled = [](double e) { return Mat3<double>{{1 + e, 0, 0, 0, 1 - 0.2 * e, 0, 0, 0, 1 - 0.2 * e}}; };
+  Mat3<double> F = pulled(0.0016);  // 9% past the strain at Sigrist's tensile strength, 0.147%
+  PlasticState<double> s;
+  ASSERT_GT(m.yield_function(F, s), 0);
+  const double p_trial = pressure(m.kirchhoff(F)) / determinant(F);
+  ASSERT_GT(p_trial, (1 - m.beta) / 2 * m.hardening.p_c0);  // the wet side of the centre
+  ASSERT_LT(p_trial, 0);
+  EXPECT_TRUE(m.project(F, s));
+  EXPECT_GT(s.Jp, 1);
+  EXPECT_LT(m.consolidation_pressure(s), m.hardening.p_c0);
+  const double p0 = m.consolidation_pressure(s);
+  EXPECT_NEAR(m.yield_function(F, s), 0, 1e-9 * m.hardening.p_c0 * m.hardening.p_c0);
+  EXPECT_GT(p0, 0);
+  for (int step = 0; step < 40; ++step) {  // 2% more, in steps of 0.05%
+    F = pulled(0.0005) * F;
+    m.project(F, s);
+  }
+  EXPECT_EQ(m.consolidation_pressure(s), 0);
+  const Mat3<double> tau = m.kirchhoff(F);
+  for (int q = 0; q < 9; ++q) EXPECT_NEAR(tau.m[q], 0, 1e-9 * m.hardening.p_c0) << q;
+}
+
 TEST(SnowCamClay, CompressionPastTheTipCompactsAndHardens) {
   const SnowCamClay<double> m = fresh_snow<double>();
   Mat3<double> F = std::cbrt(0.8) * Mat3<double>::identity();  // 220 -> 275 kg/m^3 in one step

@@ -26,7 +26,16 @@
 // wet side (p_t > p_c) the return lowers p: the snow compacts and hardens, in shear as under a
 // wheel, not only under pure pressure; on the dry side (p_t < p_c, tension) it raises p: the snow
 // dilates and softens, so a pulled bar breaks. On the p axis (q_t = 0) it ends at the tips p0 and
-// -beta p0. This is the critical-state picture of loose and dense granular matter (Roscoe and
+// -beta p0.
+// Under net tension (p_t < 0) where the centre lies in tension too (beta > 1, p_c < 0), the
+// return goes radially toward the origin instead, (p, q) = t (p_t, q_t) with t < 1 putting it on
+// the ellipse. Such a beta belongs to light snow, whose tensile strength is large against its
+// compaction strength (fresh_snow's beta is 2.175), and a return toward its centre would compact
+// snow that is pulled apart: a uniaxial tension path meets the ellipse between p_c and 0 once beta
+// > 1.74, and fresh_snow pulled that way hardened instead of breaking (measured: 2.93 N held to 3%
+// strain). From the origin the return raises p under any net tension, so pulled snow dilates and
+// softens at every density; under net compression, and for beta <= 1, nothing changes.
+// This is the critical-state picture of loose and dense granular matter (Roscoe and
 // Burland 1968; Schofield and Wroth, Critical State Soil Mechanics, 1968). It departs from CD-MPM's
 // NACC return, which keeps p between the tips, changes no volume there, so it never softens in
 // uniaxial tension or compacts in shear (measured: a pulled fresh_snow bar lost only 17% of its
@@ -143,11 +152,21 @@ struct SnowCamClay {
     return V(T(1) + T(2) * beta) * q * q + V(M * M) * (p + V(beta) * p0) * (p - p0);
   }
 
-  // The point where the ray from the centre of the ellipse of size s through (p, q) meets it.
-  FIRN_HD Return on_ellipse(T p, T q, T s) const {
+  // The point where the ray through (p, q) from the centre of the ellipse of size s, or from the
+  // origin (`from_origin`; inside the ellipse, since -beta s < 0 < s), meets it. From the origin:
+  // t (p, q) on the ellipse, ((t p - c) / a)^2 + (t q / b)^2 = 1, a quadratic in t with one positive
+  // root.
+  FIRN_HD Return on_ellipse(T p, T q, T s, bool from_origin) const {
     const T a = (T(1) + beta) * s / T(2), c = (T(1) - beta) * s / T(2);
     if (!(a > T(0))) return {T(0), T(0)};  // no strength: the ellipse is the origin
     const T b = M * a / std::sqrt(T(1) + T(2) * beta);
+    if (from_origin) {
+      const T u = p / a, v = q / b, w = c / a;
+      const T A = u * u + v * v, B = u * w;  // A t^2 - 2 B t + w^2 - 1 = 0, w^2 < 1
+      if (!(A > T(0))) return {p, q};  // at the origin: inside, nothing to return
+      const T t = (B + std::sqrt(B * B + A * (T(1) - w * w))) / A;
+      return {t * p, t * q};
+    }
     const T u = (p - c) / a, v = q / b;
     const T r = std::sqrt(u * u + v * v);
     if (!(r > T(0))) return {p, q};  // at the centre: inside, nothing to return
@@ -163,8 +182,11 @@ struct SnowCamClay {
   FIRN_HD Return radial_return(T p, T q, T J, T Jt, T eps_n, T p0_n) const {
     constexpr T kEps = FloatLimits<T>::kEpsilon;
     const T K = elastic.K;
+    // Under net tension the return starts from the origin where the centre lies in tension (beta >
+    // 1), so that pulled snow dilates (see the top of this file).
+    const bool from_origin = p < T(0) && beta > T(1);
     const auto residual = [&](T s, Return& ret) {
-      ret = on_ellipse(p, q, s);
+      ret = on_ellipse(p, q, s, from_origin);
       const T JE2 = T(1) - T(2) * Jt * ret.p / K;
       return s - hardening.pressure(eps_n + T(0.5) * std::log(JE2 / (J * J)));
     };
