@@ -132,11 +132,12 @@ FIRN_HD Mat3<T> rescale_isochoric_deviator(const Mat3<T>& F_tr, T Jm23, T Ibar, 
 }
 
 // The invariants a return mapping on W lanes starts from, one loop over the lanes in scalar code
-// (FIRN_NOINLINE): J = det F, J^(-2/3) (by inverse_root), Ibar = tr(bbar) / 3 and ||dev(bbar)||_F
-// of bbar = J^(-2/3) F F^T.
+// (FIRN_NOINLINE): J = det F, J^(-2/3) (by inverse_root), Ibar = tr(bbar) / 3, D = dev(bbar) (its
+// six entries in ParticleView::tau's order: 00, 11, 22, 01, 12, 20) and ||D||_F of
+// bbar = J^(-2/3) F F^T.
 template <class T, int W>
 FIRN_NOINLINE FIRN_HD void isochoric_invariants_lanes(const Mat3<Lanes<T, W>>& F, Lanes<T, W>& J, Lanes<T, W>& Jm23,
-                                                      Lanes<T, W>& Ibar, Lanes<T, W>& dev_norm) {
+                                                      Lanes<T, W>& Ibar, Lanes<T, W> (&D)[6], Lanes<T, W>& dev_norm) {
   FIRN_LANES
   for (int l = 0; l < W; ++l) {
     T f[9];  // F, row by row
@@ -151,6 +152,12 @@ FIRN_NOINLINE FIRN_HD void isochoric_invariants_lanes(const Mat3<Lanes<T, W>>& F
     J.v[l] = det;
     Jm23.v[l] = jm23;
     Ibar.v[l] = jm23 * third_trace;
+    D[0].v[l] = jm23 * e0;
+    D[1].v[l] = jm23 * e1;
+    D[2].v[l] = jm23 * e2;
+    D[3].v[l] = jm23 * b01;
+    D[4].v[l] = jm23 * b12;
+    D[5].v[l] = jm23 * b20;
     dev_norm.v[l] = jm23 * (dd * inverse_root<2>(dd));  // sqrt(dd); 0 for dd = 0
   }
 }

@@ -49,7 +49,7 @@ template <class T>
 struct HyperelasticPlastic {
   static constexpr const char* kName = "hyperelastic_plastic";
   static constexpr bool kPlastic = true, kUsesAlpha = true, kUsesJp = false;
-  static constexpr bool kLanes = true;  // project_lanes, kirchhoff_lanes
+  static constexpr bool kLanes = true;  // project_lanes
   MooneyRivlin<T> elastic;
   J2Hardening<T> hardening;
 
@@ -106,22 +106,26 @@ struct HyperelasticPlastic {
   // same return: Newton without bisection for dgamma (solve_j2_return_lanes), the stretch sqrt(A) as
   // a series in dev(bbar_tr) (rescale_isochoric_deviator_lanes), J^(-1/3) and the power law by lane
   // arithmetic (kernels/lane_math.hpp) instead of the C library. Returns the lanes that yielded;
-  // their F, alpha and plastic work density are updated. A lane outside that common case (J <= 0, a
-  // softening law that leaves Newton's bracket, a deviator beyond the series' radius) is cleared
-  // in `ok` with its values undefined, and the caller projects it with project().
+  // their F, alpha and plastic work density are updated, and every lane's Kirchhoff stress (in
+  // ParticleView::tau's order) is that of the F it leaves (lane_stress). A lane outside that common
+  // case (J <= 0, a softening law that leaves Newton's bracket, a deviator beyond the series'
+  // radius) is cleared in `ok` with its values undefined, and the caller projects it with project().
   template <int W>
-  FIRN_HD LaneMask<W> project_lanes(Mat3<Lanes<T, W>>& F, Lanes<T, W>& alpha, Lanes<T, W>& work,
-                                    LaneMask<W>& ok) const {
+  FIRN_HD LaneMask<W> project_lanes(Mat3<Lanes<T, W>>& F, Lanes<T, W>& alpha, Lanes<T, W>& work, LaneMask<W>& ok,
+                                    Lanes<T, W> (&tau)[6]) const {
     using L = Lanes<T, W>;
-    L J, Jm23, Ibar, dev_norm;
-    isochoric_invariants_lanes(F, J, Jm23, Ibar, dev_norm);
+    L J, Jm23, Ibar, D[6], dev_norm;
+    isochoric_invariants_lanes(F, J, Jm23, Ibar, D, dev_norm);
     ok = ok && J > L(T(0));
     const L s_norm = L(elastic.G1) * dev_norm;
     const L sqrt23(std::sqrt(T(2) / T(3)));
     L sigma_n, slope;
     hardening.evaluate(alpha, sigma_n, slope, ok);
     const LaneMask<W> yields = ok && s_norm - sqrt23 * sigma_n > L(T(0));  // step 1
-    if (!any(yields)) return yields;
+    if (!any(yields)) {
+      lane_stress(F, J, D, L(T(1)), tau);
+      return yields;
+    }
 
     const L mu_bar = L(elastic.G1) * Ibar;  // step 2
     L sigma_end;
@@ -133,13 +137,26 @@ struct HyperelasticPlastic {
     work = select(plastic, L(T(0.5)) * (sigma_n + sigma_end) * (alpha_end - alpha), L(T(0)));
     alpha = select(plastic, alpha_end, alpha);
     for (int q = 0; q < 9; ++q) F.m[q] = select(plastic, F_end.m[q], F.m[q]);
+    lane_stress(F, J, D, select(plastic, keep, L(T(1))), tau);
     return plastic;
   }
 
-  // tau's six entries in ParticleView::tau's order (MooneyRivlin::kirchhoff_lanes).
+ private:
+  // The Kirchhoff stress of the F project_lanes leaves, whose isochoric deviator is keep D at the
+  // trial's J (keep = 1 where nothing was returned). With G2 = 0 (the thesis' snow) that is
+  // MooneyRivlin's tau = G1 J^(-2/3) dev(b_e) + K/2 (J^2 - 1) I = G1 keep D + K/2 (J^2 - 1) I, from
+  // what the return already holds, rather than from F F^T again (issue 15); with G2 != 0 it is
+  // MooneyRivlin::kirchhoff_lanes of F.
   template <int W>
-  FIRN_HD void kirchhoff_lanes(const Mat3<Lanes<T, W>>& F, Lanes<T, W> (&tau)[6]) const {
-    elastic.kirchhoff_lanes(F, tau);
+  FIRN_HD void lane_stress(const Mat3<Lanes<T, W>>& F, const Lanes<T, W>& J, const Lanes<T, W> (&D)[6],
+                           const Lanes<T, W>& keep, Lanes<T, W> (&tau)[6]) const {
+    using L = Lanes<T, W>;
+    if (elastic.G2 != T(0)) {
+      elastic.kirchhoff_lanes(F, tau);
+      return;
+    }
+    const L shear = L(elastic.G1) * keep, pressure = L(elastic.K / T(2)) * (J * J - L(T(1)));
+    for (int c = 0; c < 6; ++c) tau[c] = c < 3 ? shear * D[c] + pressure : shear * D[c];
   }
 };
 

@@ -43,7 +43,7 @@
 // The new F_E, the trial one stretched by a symmetric tensor coaxial with b_tr, has
 // dev(bbar_e) = (q / q_t) dev(bbar_tr) and det = J_E(p) (kernels/constitutive/deviator_rescale.hpp).
 // Neither path takes an SVD: the elastic one (y <= 0) costs one F F^T.
-// The lane form (project_lanes, kirchhoff_lanes; kernels/lanes.hpp) checks W particles at once and
+// The lane form (project_lanes; kernels/lanes.hpp) checks W particles at once and
 // hands the ones that yield to project(), so the common elastic case runs in vector lanes.
 #pragma once
 
@@ -65,7 +65,7 @@ template <class T>
 struct SnowCamClay {
   static constexpr const char* kName = "snow_cam_clay";
   static constexpr bool kPlastic = true, kUsesAlpha = false, kUsesJp = true;
-  static constexpr bool kLanes = true;  // project_lanes, kirchhoff_lanes
+  static constexpr bool kLanes = true;  // project_lanes
   MooneyRivlin<T> elastic;  // G2 = 0
   T M;                      // slope of the critical state line
   T beta;                   // cohesion: the tensile tip is at -beta p0
@@ -114,11 +114,12 @@ struct SnowCamClay {
   // project() on W particles at once for the elastic case: the yield check of project() in lane
   // arithmetic (J^(-2/3) by kernels/lane_math.hpp; p0 per lane, as project() has it). A lane that
   // yields, or whose J is not positive, is cleared in `ok` and left unchanged for the caller to
-  // project with project(); no lane is returned here, so the mask of lanes returned is empty and
-  // `work` is zero.
+  // project with project(); no lane is returned here, so the mask of lanes returned is empty,
+  // `work` is zero and tau is the stress of F as it is (MooneyRivlin::kirchhoff_lanes, in
+  // ParticleView::tau's order).
   template <int W>
   FIRN_HD LaneMask<W> project_lanes(const Mat3<Lanes<T, W>>& F, const Lanes<T, W>& Jp, Lanes<T, W>& work,
-                                    LaneMask<W>& ok) const {
+                                    LaneMask<W>& ok, Lanes<T, W> (&tau)[6]) const {
     using L = Lanes<T, W>;
     const L J = determinant(F);
     const Mat3<L> b = mul_transposed(F, F);
@@ -132,13 +133,8 @@ struct SnowCamClay {
     for (int l = 0; l < W; ++l) p0.v[l] = consolidation_pressure(PlasticState<T>{T(0), Jp.v[l]});
     ok = ok && J > L(T(0)) && yield(p, q, p0) <= L(T(0));  // a NaN yield value is handed back too, as project() does
     work = L(T(0));
-    return LaneMask<W>::none();
-  }
-
-  // tau's six entries in ParticleView::tau's order (MooneyRivlin::kirchhoff_lanes).
-  template <int W>
-  FIRN_HD void kirchhoff_lanes(const Mat3<Lanes<T, W>>& F, Lanes<T, W> (&tau)[6]) const {
     elastic.kirchhoff_lanes(F, tau);
+    return LaneMask<W>::none();
   }
 
  private:

@@ -80,8 +80,9 @@ struct ConstitutiveUpdate {
   }
 };
 
-// Whether a model has the lane form of its stress and, for a plastic model, its return (Model::kLanes,
-// with kirchhoff_lanes, and project_lanes where kPlastic), for ConstitutiveUpdateLanes.
+// Whether a model has the lane form of its stress or, for a plastic model, of its return and the
+// stress after it (Model::kLanes, with kirchhoff_lanes, or project_lanes where kPlastic), for
+// ConstitutiveUpdateLanes.
 template <class Model, class = void>
 struct HasLanes : std::false_type {};
 template <class Model>
@@ -91,8 +92,9 @@ struct HasLanes<Model, std::void_t<decltype(Model::kLanes)>> : std::integral_con
 // particles [batch W, batch W + W) of the range, the last batch padded with copies of its first
 // particle whose results are dropped. The lanes carry F and, for a plastic model, its one plastic
 // scalar (alpha for J2 plasticity, J_P for Cam-clay snow) and run the model's lane form; a lane the
-// lane form leaves to the scalar path (ok cleared) is updated by ConstitutiveUpdate itself. An
-// elastic model's lane form is its stress alone. Every particle's result depends on its own state
+// lane form leaves to the scalar path (ok cleared) is updated by ConstitutiveUpdate itself. A
+// plastic model's lane form gives the stress with the return (HyperelasticPlastic's from what the
+// return holds); an elastic model's lane form is its stress alone. Every particle's result depends on its own state
 // only, so it is the same for any batching and thread count.
 template <class T, class Model, int W>
 struct ConstitutiveUpdateLanes {
@@ -128,9 +130,11 @@ struct ConstitutiveUpdateLanes {
       }
     }
     LaneMask<W> ok = LaneMask<W>::all(), plastic = LaneMask<W>::none();
-    if constexpr (Model::kPlastic) plastic = one.model.project_lanes(F, s, work, ok);
     L tau[6];  // in ParticleView::tau's order
-    one.model.kirchhoff_lanes(F, tau);
+    if constexpr (Model::kPlastic)
+      plastic = one.model.project_lanes(F, s, work, ok, tau);
+    else
+      one.model.kirchhoff_lanes(F, tau);
     // Where a lane yielded, every lane's F and plastic scalar are stored, changed or not (a lane that
     // did not yield, or that the lane form handed back, holds the values it read); where none did,
     // nothing changed and nothing is stored, which spares the columns' write-back. Then the stress.
