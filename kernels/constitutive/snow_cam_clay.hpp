@@ -34,7 +34,11 @@
 // snow that is pulled apart: a uniaxial tension path meets the ellipse between p_c and 0 once beta
 // > 1.74, and fresh_snow pulled that way hardened instead of breaking (measured: 2.93 N held to 3%
 // strain). From the origin the return raises p under any net tension, so pulled snow dilates and
-// softens at every density; under net compression, and for beta <= 1, nothing changes.
+// softens at every density; under net compression, and for beta <= 1, nothing changes. The start
+// jumps at p_t = 0 (from the origin below, the centre above), so a trial sheared at a mean stress
+// near zero returns without volume change on one side and with some compaction on the other; a
+// start moving continuously toward the centre would change compressive returns, and with them the
+// confined-compression calibration (data/snow/fit_cam_clay.py).
 // This is the critical-state picture of loose and dense granular matter (Roscoe and
 // Burland 1968; Schofield and Wroth, Critical State Soil Mechanics, 1968). It departs from CD-MPM's
 // NACC return, which keeps p between the tips, changes no volume there, so it never softens in
