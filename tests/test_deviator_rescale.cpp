@@ -135,6 +135,14 @@ Mat3<double> trial_with_deviator(std::mt19937& rng, double size, double J, doubl
   return (std::cbrt(J) * spd_sqrt(bbar)) * random_rotation(rng);
 }
 
+// Lane l of D = bbar - Ibar I in ParticleView::tau's order (as isochoric_invariants_lanes gives
+// it), rounded to T.
+template <class T, int W>
+void set_deviator_lane(Lanes<T, W> (&D)[6], int l, const Mat3<double>& bbar, double Ibar) {
+  const double d[6] = {bbar(0, 0) - Ibar, bbar(1, 1) - Ibar, bbar(2, 2) - Ibar, bbar(0, 1), bbar(1, 2), bbar(2, 0)};
+  for (int c = 0; c < 6; ++c) D[c].v[l] = T(d[c]);
+}
+
 // The largest difference of the lane form in T from the scalar rescale in double, over deviators
 // from 1e-4 to 0.99 `radius` (||D||_F / Ibar) along random directions and the two uniaxial ones
 // (the eigenvalue sqrt(2/3) ||D||_F, of either sign), for returns from none (keep 1) to full (keep 0).
@@ -150,7 +158,7 @@ double lane_rescale_error(double radius, bool inside) {
     for (const double keep : {1.0, 0.9999, 0.5, 0.0})
       for (int i = 0; i < 8; ++i) {
         Mat3<L> F;
-        L Jm23, Ibar, J;
+        L D[6], Ibar, J;
         const L keep_l{T(keep)};
         Mat3<double> want[W];
         for (int l = 0; l < W; ++l) {
@@ -164,12 +172,12 @@ double lane_rescale_error(double radius, bool inside) {
           const double Jr = determinant(Fr), Jm23r = std::pow(Jr, -2.0 / 3.0);
           const double Ibar_r = Jm23r * trace(mul_transposed(Fr, Fr)) / 3;
           want[l] = rescale_isochoric_deviator(Fr, Jm23r, Ibar_r, keep, Jr, 1.0);
-          Jm23.v[l] = T(Jm23r);
+          set_deviator_lane(D, l, Jm23r * mul_transposed(Fr, Fr), Ibar_r);
           Ibar.v[l] = T(Ibar_r);
           J.v[l] = T(Jr);
         }
         LaneMask<W> ok = LaneMask<W>::all();
-        const Mat3<L> got = rescale_isochoric_deviator_lanes(F, Jm23, Ibar, keep_l, J, LaneMask<W>::all(), ok);
+        const Mat3<L> got = rescale_isochoric_deviator_lanes(F, D, Ibar, keep_l, J, LaneMask<W>::all(), ok);
         for (int l = 0; l < W; ++l) {
           if (inside) {
             EXPECT_TRUE(ok.m[l]) << size << " " << keep << " lane " << l;
@@ -209,17 +217,18 @@ void check_handed_back_outside_the_radius() {
   std::mt19937 rng(37);
   const double radius = std::sqrt(double(CoaxialSqrtSeries<T>::kRadiusSquared));
   Mat3<L> F;
-  L Jm23(T(1)), Ibar, J(T(1));
+  L D[6], Ibar, J(T(1));
   const L keep{T(0.5)};
   for (int l = 0; l < W; ++l) {
     double ibar;
     const Mat3<double> Fd = trial_with_deviator(rng, 1.01 * radius, 1.0, ibar);
     for (int q = 0; q < 9; ++q) F.m[q].v[l] = T(Fd.m[q]);
+    set_deviator_lane(D, l, mul_transposed(Fd, Fd), ibar);  // J = 1: bbar = F F^T
     Ibar.v[l] = T(ibar);
   }
   LaneMask<W> active = LaneMask<W>::all(), ok = LaneMask<W>::all();
   active.m[1] = active.m[3] = 0;
-  rescale_isochoric_deviator_lanes(F, Jm23, Ibar, keep, J, active, ok);
+  rescale_isochoric_deviator_lanes(F, D, Ibar, keep, J, active, ok);
   for (int l = 0; l < W; ++l) EXPECT_EQ(ok.m[l], 1 - active.m[l]) << l;
 }
 

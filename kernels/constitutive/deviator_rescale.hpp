@@ -132,12 +132,12 @@ FIRN_HD Mat3<T> rescale_isochoric_deviator(const Mat3<T>& F_tr, T Jm23, T Ibar, 
 }
 
 // The invariants a return mapping on W lanes starts from, one loop over the lanes in scalar code
-// (FIRN_NOINLINE): J = det F, J^(-2/3) (by inverse_root), Ibar = tr(bbar) / 3, D = dev(bbar) (its
-// six entries in ParticleView::tau's order: 00, 11, 22, 01, 12, 20) and ||D||_F of
-// bbar = J^(-2/3) F F^T.
+// (FIRN_NOINLINE): J = det F, Ibar = tr(bbar) / 3, D = dev(bbar) (its six entries in
+// ParticleView::tau's order: 00, 11, 22, 01, 12, 20) and ||D||_F of bbar = J^(-2/3) F F^T, with
+// J^(-2/3) by inverse_root.
 template <class T, int W>
-FIRN_NOINLINE FIRN_HD void isochoric_invariants_lanes(const Mat3<Lanes<T, W>>& F, Lanes<T, W>& J, Lanes<T, W>& Jm23,
-                                                      Lanes<T, W>& Ibar, Lanes<T, W> (&D)[6], Lanes<T, W>& dev_norm) {
+FIRN_NOINLINE FIRN_HD void isochoric_invariants_lanes(const Mat3<Lanes<T, W>>& F, Lanes<T, W>& J, Lanes<T, W>& Ibar,
+                                                      Lanes<T, W> (&D)[6], Lanes<T, W>& dev_norm) {
   FIRN_LANES
   for (int l = 0; l < W; ++l) {
     T f[9];  // F, row by row
@@ -150,7 +150,6 @@ FIRN_NOINLINE FIRN_HD void isochoric_invariants_lanes(const Mat3<Lanes<T, W>>& F
     const T e0 = b00 - third_trace, e1 = b11 - third_trace, e2 = b22 - third_trace;
     const T dd = e0 * e0 + e1 * e1 + e2 * e2 + T(2) * (b01 * b01 + b12 * b12 + b20 * b20);
     J.v[l] = det;
-    Jm23.v[l] = jm23;
     Ibar.v[l] = jm23 * third_trace;
     D[0].v[l] = jm23 * e0;
     D[1].v[l] = jm23 * e1;
@@ -178,7 +177,8 @@ struct CoaxialSqrtSeries<double> {
 };
 
 // rescale_isochoric_deviator on W lanes (kernels/lanes.hpp) for a volume-preserving return (J_new =
-// J_tr, stretch 1), the J2 return's case, for the lanes in `active`. One loop over the lanes holds
+// J_tr, stretch 1), the J2 return's case, for the lanes in `active`, given D = dev(bbar_tr) as
+// isochoric_invariants_lanes gives it (tau's order). One loop over the lanes holds
 // a lane's whole computation in scalar code, which the compiler vectorises (FIRN_NOINLINE):
 // - x by two Newton steps from its first-order value 1 + keep^2 (J2 - keep J3) / 3 (J2 = D:D / 2,
 //   J3 = det D; det(x I + keep D) = x^3 - keep^2 J2 x + keep^3 J3 for tr D = 0).
@@ -201,7 +201,7 @@ struct CoaxialSqrtSeries<double> {
 // radius, or whose x has not converged, is cleared in `ok` for the caller's scalar path.
 template <class T, int W>
 FIRN_NOINLINE FIRN_HD Mat3<Lanes<T, W>> rescale_isochoric_deviator_lanes(
-    const Mat3<Lanes<T, W>>& F_tr, const Lanes<T, W>& Jm23, const Lanes<T, W>& Ibar, const Lanes<T, W>& keep,
+    const Mat3<Lanes<T, W>>& F_tr, const Lanes<T, W> (&D)[6], const Lanes<T, W>& Ibar, const Lanes<T, W>& keep,
     const Lanes<T, W>& J, const LaneMask<W>& active, LaneMask<W>& ok) {
   using Series = CoaxialSqrtSeries<T>;
   constexpr int kNewtonSteps = 2;
@@ -211,10 +211,8 @@ FIRN_NOINLINE FIRN_HD Mat3<Lanes<T, W>> rescale_isochoric_deviator_lanes(
     T f[9];  // F_tr, row by row
     FIRN_UNROLL
     for (int q = 0; q < 9; ++q) f[q] = F_tr.m[q].v[l];
-    const T ibar = Ibar.v[l], k = keep.v[l], jm23 = Jm23.v[l];
-    // D = Jm23 F F^T - Ibar I, symmetric.
-    const T d00 = jm23 * rows_dot(f, 0, 0) - ibar, d11 = jm23 * rows_dot(f, 1, 1) - ibar, d22 = jm23 * rows_dot(f, 2, 2) - ibar;
-    const T d01 = jm23 * rows_dot(f, 0, 1), d12 = jm23 * rows_dot(f, 1, 2), d20 = jm23 * rows_dot(f, 2, 0);
+    const T ibar = Ibar.v[l], k = keep.v[l];
+    const T d00 = D[0].v[l], d11 = D[1].v[l], d22 = D[2].v[l], d01 = D[3].v[l], d12 = D[4].v[l], d20 = D[5].v[l];
     const T DD = d00 * d00 + d11 * d11 + d22 * d22 + T(2) * (d01 * d01 + d12 * d12 + d20 * d20);
     const T J2 = T(0.5) * DD;
     const T J3 = d00 * (d11 * d22 - d12 * d12) - d01 * (d01 * d22 - d12 * d20) + d20 * (d01 * d12 - d11 * d20);

@@ -114,8 +114,8 @@ struct HyperelasticPlastic {
   FIRN_HD LaneMask<W> project_lanes(Mat3<Lanes<T, W>>& F, Lanes<T, W>& alpha, Lanes<T, W>& work, LaneMask<W>& ok,
                                     Lanes<T, W> (&tau)[6]) const {
     using L = Lanes<T, W>;
-    L J, Jm23, Ibar, D[6], dev_norm;
-    isochoric_invariants_lanes(F, J, Jm23, Ibar, D, dev_norm);
+    L J, Ibar, D[6], dev_norm;
+    isochoric_invariants_lanes(F, J, Ibar, D, dev_norm);
     ok = ok && J > L(T(0));
     const L s_norm = L(elastic.G1) * dev_norm;
     const L sqrt23(std::sqrt(T(2) / T(3)));
@@ -132,7 +132,7 @@ struct HyperelasticPlastic {
     const L dgamma = solve_j2_return_lanes(hardening, alpha, s_norm, mu_bar, sigma_n, slope, yields, ok, sigma_end);
     const L keep = L(T(1)) - L(T(2)) * mu_bar * dgamma / s_norm;
     const L alpha_end = alpha + sqrt23 * dgamma;
-    const Mat3<L> F_end = rescale_isochoric_deviator_lanes(F, Jm23, Ibar, keep, J, yields, ok);  // step 3
+    const Mat3<L> F_end = rescale_isochoric_deviator_lanes(F, D, Ibar, keep, J, yields, ok);  // step 3
     const LaneMask<W> plastic = yields && ok;
     work = select(plastic, L(T(0.5)) * (sigma_n + sigma_end) * (alpha_end - alpha), L(T(0)));
     alpha = select(plastic, alpha_end, alpha);
