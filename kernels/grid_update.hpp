@@ -163,6 +163,15 @@ FIRN_HD bool pooled_node_velocity(const T* data, const int block[3], int l, cons
   return true;
 }
 
+// The gravity kick's work on a node of velocity v after the kick, m dt g . (v - dt g / 2), added to
+// `sum` an axis at a time. An axis without gravity adds a zero, which leaves the sum as it is (for a
+// finite velocity), so it is skipped: a scene without gravity sums nothing (issue 15).
+template <class T>
+FIRN_HD void add_gravity_work(const GridUpdateParams<T>& p, T mass, const T v[3], T& sum) {
+  for (int d = 0; d < 3; ++d)
+    if (p.gravity[d] != T(0)) sum += mass * p.dt * p.gravity[d] * (v[d] - T(0.5) * p.dt * p.gravity[d]);
+}
+
 // The node's velocity at the start of the grid update (gravity, then damping), with the side
 // effects on the block: an empty node's velocity channels zeroed (returns false), FLIP's old
 // velocity divided by the mass, gravity's work added to `gravity_work`.
@@ -178,8 +187,7 @@ FIRN_HD bool start_node(T* data, int l, const GridUpdateParams<T>& p, T v[3], T&
   }
   const T inv_m = T(1) / mass;
   node_velocity<T, kTransfer>(data, l, inv_m, p, v);
-  if (p.work)
-    for (int d = 0; d < 3; ++d) gravity_work += mass * p.dt * p.gravity[d] * (v[d] - T(0.5) * p.dt * p.gravity[d]);
+  if (p.work) add_gravity_work(p, mass, v, gravity_work);
   if (kTransfer == Transfer::flip)
     for (int d = 0; d < 3; ++d) data[(Ch::kOldVelocity + d) * kBlockNodes + l] *= inv_m;
   apply_damping(p, v);
@@ -243,18 +251,28 @@ FIRN_HD bool block_in_wall_band(const int block[3], const GridUpdateParams<T>& p
   return false;
 }
 
-// A block no collider or wall reaches, with no energy budget and APIC or PIC channels: start_node and
-// apply_damping's operations node by node, in one loop over the block's nodes that vectorises (issue
-// 15: the node-by-node path took 84 instructions per node on cube_drop, where most blocks are free).
+// A block no collider or wall reaches, with APIC or PIC channels: start_node and apply_damping's
+// operations node by node, in one loop over the block's nodes that vectorises (issue 15: the
+// node-by-node path took 84 instructions per node on cube_drop, where most blocks are free).
 // It spells node_velocity and apply_damping out: called here, their local v[3] and the damping's
 // branch kept GCC 12 from vectorising the loop ("no vectype", "control flow in loop"), and
-// tests/test_grid_update.cpp holds the two paths to the same bits.
+// tests/test_grid_update.cpp holds the two paths to the same bits. With an energy budget, the
+// gravity kick's work is summed first, node by node in start_node's order; the block's sums are
+// returned.
 template <class T, Transfer kTransfer>
-FIRN_HD void free_block_update(T* data, const GridUpdateParams<T>& p) {
+FIRN_HD BlockReactions<T> free_block_update(T* data, const GridUpdateParams<T>& p) {
   using Ch = GridChannels<kTransfer>;
   const T* mass = data + Ch::kMass * kBlockNodes;
   T* vel = data + Ch::kVelocity * kBlockNodes;
   const T kick[3] = {p.dt * p.gravity[0], p.dt * p.gravity[1], p.dt * p.gravity[2]};
+  BlockReactions<T> sums;
+  if (p.work && (p.gravity[0] != T(0) || p.gravity[1] != T(0) || p.gravity[2] != T(0)))
+    for (int l = 0; l < kBlockNodes; ++l) {
+      if (!(mass[l] > p.min_mass)) continue;
+      T v[3];
+      node_velocity<T, kTransfer>(data, l, T(1) / mass[l], p, v);
+      add_gravity_work(p, mass[l], v, sums.work[kGravityWork]);
+    }
   const bool damped = p.damping_factor != T(1);
   FIRN_LANES
   for (int l = 0; l < kBlockNodes; ++l) {
@@ -266,17 +284,14 @@ FIRN_HD void free_block_update(T* data, const GridUpdateParams<T>& p) {
       vel[d * kBlockNodes + l] = filled ? v : T(0);
     }
   }
+  return sums;
 }
 
+// The block node by node, every condition in the header's order; the block's sums are returned.
 template <class T, Transfer kTransfer>
-FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, const GridUpdateParams<T>& p) {
+FIRN_HD BlockReactions<T> node_block_update(T* data, const int block[3], std::uint32_t near, std::size_t slot,
+                                            const GridUpdateParams<T>& p) {
   using Ch = GridChannels<kTransfer>;
-  const std::uint32_t near = colliders_near_block(block, p);
-  if (near == 0 && p.work == nullptr && kTransfer != Transfer::flip && !block_in_wall_band(block, p)) {
-    free_block_update<T, kTransfer>(data, p);
-    BlockReactions<T>{}.write(slot, p);  // this block's sums are zero
-    return;
-  }
   const bool pooled = near != 0 && any_pooled(near, p);  // walls first, and last (see the header)
   const T* moments = pooled ? p.moments.slot_data(slot) : nullptr;
   BlockReactions<T> sums;
@@ -307,7 +322,15 @@ FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, co
     apply_walls(block, l, p, v);
     for (int d = 0; d < 3; ++d) data[(Ch::kVelocity + d) * kBlockNodes + l] = v[d];
   }
-  sums.write(slot, p);
+  return sums;
+}
+
+template <class T, Transfer kTransfer>
+FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, const GridUpdateParams<T>& p) {
+  const std::uint32_t near = colliders_near_block(block, p);
+  const bool free = near == 0 && kTransfer != Transfer::flip && !block_in_wall_band(block, p);
+  (free ? free_block_update<T, kTransfer>(data, p) : node_block_update<T, kTransfer>(data, block, near, slot, p))
+      .write(slot, p);
 }
 
 }  // namespace firn

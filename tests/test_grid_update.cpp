@@ -1,7 +1,7 @@
 // The grid update of a free block (kernels/grid_update.hpp): a block that no collider and no domain
-// wall reaches, without an energy budget, is updated by one vectorised loop over its nodes. It must
-// give the node-by-node path's bits, empty nodes and damping included, and the wall-band test that
-// sends a block to that loop must agree with apply_walls' test node by node.
+// wall reaches is updated by one vectorised loop over its nodes. It must give the node-by-node
+// path's bits, empty nodes, damping and the energy budget's gravity work included, and the
+// wall-band test that sends a block to that loop must agree with apply_walls' test node by node.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -43,13 +43,30 @@ void check_free_block_is_the_node_path(T damping_factor) {
   GridUpdateParams<T> p = free_params(damping_factor);
   ASSERT_FALSE(block_in_wall_band(block, p));
 
-  std::vector<T> vectorised = data, node_by_node = data;
+  // Each path with and without an energy budget. A plane half a cell below the block's lowest
+  // nodes reaches the block but holds none of its nodes: it sends the block down the node-by-node
+  // path and changes nothing there.
+  std::vector<T> vectorised = data, vectorised_budget = data, node_by_node = data, node_budget = data;
   grid_update_block<T, Transfer::apic>(vectorised.data(), block, 0, p);
-  T work[kWorkKinds] = {};
-  p.work = work;  // an energy budget sends the block down the node-by-node path
+  T free_work[kWorkKinds] = {}, node_work[kWorkKinds] = {}, reactions[kReactionComponents] = {};
+  p.work = free_work;
+  grid_update_block<T, Transfer::apic>(vectorised_budget.data(), block, 0, p);
+  Collider<T> plane;
+  plane.center[1] = T(block[1] * kBlockSize) * p.dx - (T(kColliderSkin) + T(0.5)) * p.dx;
+  p.colliders[0] = plane;
+  p.collider_count = 1;
+  p.reactions = reactions;
+  ASSERT_EQ(colliders_near_block(block, p), 1u);
+  p.work = nullptr;
   grid_update_block<T, Transfer::apic>(node_by_node.data(), block, 0, p);
-  EXPECT_NE(work[kGravityWork], T(0));  // that path ran
+  p.work = node_work;
+  grid_update_block<T, Transfer::apic>(node_budget.data(), block, 0, p);
+  EXPECT_NE(free_work[kGravityWork], T(0));
+  EXPECT_EQ(std::memcmp(&free_work[kGravityWork], &node_work[kGravityWork], sizeof(T)), 0);
+  EXPECT_EQ(node_work[kColliderWork], T(0));
   EXPECT_EQ(std::memcmp(vectorised.data(), node_by_node.data(), data.size() * sizeof(T)), 0);
+  EXPECT_EQ(std::memcmp(vectorised_budget.data(), node_by_node.data(), data.size() * sizeof(T)), 0);
+  EXPECT_EQ(std::memcmp(node_budget.data(), node_by_node.data(), data.size() * sizeof(T)), 0);
   for (int l = 0; l < kBlockNodes; ++l)
     for (int d = 1; d < 4; ++d) {
       const T v = vectorised[d * kBlockNodes + l];
