@@ -21,6 +21,7 @@
 #include "apps/commands.hpp"
 #include "apps/launch_table.hpp"
 #include "engine/material_catalog.hpp"
+#include "engine/output/run_summary.hpp"
 #include "studies/bench/step_benchmark.hpp"
 #include "studies/bench/surface_benchmark.hpp"
 
@@ -31,10 +32,10 @@ int g_status = 0;
 
 void print_step_benchmark(const bench::StepBenchmarkOptions& o) {
   const bench::StepBenchmarkResult r = bench::benchmark_step(o);
-  std::printf("problem %s\nprecision %s\ntransfer %s\nbackend %s\nthreads %d\nparticles %zu\nbytes_per_particle %zu\n"
-              "steps %d\nseconds %.4f\n",
-              o.problem.c_str(), o.precision.c_str(), o.transfer.c_str(), r.backend.c_str(), r.threads, r.particles,
-              r.bytes_per_particle, o.steps, r.seconds);
+  std::printf("problem %s\nprecision %s\ntransfer %s\nbackend %s\nthreads %d\nopenmp_wait %s\nparticles %zu\n"
+              "bytes_per_particle %zu\nsteps %d\nseconds %.4f\n",
+              o.problem.c_str(), o.precision.c_str(), o.transfer.c_str(), r.backend.c_str(), r.threads,
+              firn::openmp_wait().c_str(), r.particles, r.bytes_per_particle, o.steps, r.seconds);
   std::printf("grid_blocks_active %zu\ngrid_memory_mb %.2f\n", r.grid_blocks_active, r.grid_memory_bytes / 1048576.0);
   std::printf("particle_steps_per_second %.0f\nstate_hash %016" PRIx64 "\n", r.particle_steps_per_second, r.state_hash);
   if (o.profile) print_launch_table(r.launches, r.seconds, o.steps);

@@ -54,7 +54,7 @@ def test_outputs():
     s = summary(out)
     check(s["status"] == "ok" and s["error"] is None, f"summary: {s}")
     for key in ["steps", "particles", "wall_seconds", "step_seconds", "particle_steps_per_second", "threads",
-                "backend", "precision", "peak_memory_mb"]:
+                "openmp_wait", "backend", "precision", "peak_memory_mb"]:
         check(key in s, f"summary.json lacks {key}")
     rows = metrics(out)
     header = ("frame,step,time,dt,particles,kinetic_energy,elastic_energy,momentum_x,momentum_y,momentum_z,"
@@ -129,6 +129,20 @@ def test_profile():
     check(sum(launches.values()) <= s["step_seconds"], f"launches take {sum(launches.values())} s of {s['step_seconds']} s")
     check("p2g" in r.stdout and "(outside launches)" in r.stdout, f"no launch table printed: {r.stdout}")
     check("launch_seconds" not in summary(plain), "a run without --profile writes launch_seconds")
+
+
+def test_wait():
+    """firn chooses how idle OpenMP threads wait unless the user did, and summary.json says which."""
+    cases = [({"OMP_WAIT_POLICY": "active"}, {"active"}), ({"GOMP_SPINCOUNT": "777"}, {"spin 777"}),
+             ({}, {"spin 10000", "passive"})]  # which of the two depends on what else runs
+    base = {k: v for k, v in os.environ.items() if k not in ("OMP_WAIT_POLICY", "GOMP_SPINCOUNT")}
+    for i, (env, expected) in enumerate(cases):
+        out = fresh(f"wait{i}")
+        r = run(["run", SCENE, "--preview", "--out", out, "--set", "simulation.end_time=1 ms"], env={**base, **env})
+        check(r.returncode == 0, f"firn run exited {r.returncode}: {r.stderr}")
+        check(summary(out)["openmp_wait"] in expected, f"{env}: openmp_wait {summary(out)['openmp_wait']}")
+    b = run(["bench", "step", "--steps", "1", "--threads", "1"], env={**base, "GOMP_SPINCOUNT": "5"})
+    check("openmp_wait spin 5" in b.stdout, f"firn bench step: {b.stdout}")
 
 
 def test_no_particles():

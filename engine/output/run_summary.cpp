@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace firn {
@@ -31,7 +32,8 @@ std::string RunSummary::to_json() const {
     << ",\n  \"steps\": " << steps << ",\n  \"particles\": " << particles << ",\n  \"simulated_time\": " << simulated_time
     << ",\n  \"wall_seconds\": " << wall_seconds << ",\n  \"step_seconds\": " << step_seconds
     << ",\n  \"particle_steps_per_second\": " << particle_steps_per_second() << ",\n  \"threads\": " << threads
-    << ",\n  \"backend\": " << json_string(backend) << ",\n  \"precision\": " << json_string(precision)
+    << ",\n  \"openmp_wait\": " << json_string(openmp_wait) << ",\n  \"backend\": " << json_string(backend)
+    << ",\n  \"precision\": " << json_string(precision)
     << ",\n  \"peak_memory_mb\": " << peak_memory_mb << ",\n  \"state_hash\": " << json_string(state_hash);
   if (!launches.empty()) {
     j << ",\n  \"launch_seconds\": {";
@@ -50,6 +52,12 @@ double peak_memory_mb() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return double(u.ru_maxrss) / 1024.0;  // ru_maxrss is in kB on Linux
+}
+
+std::string openmp_wait() {
+  if (const char* spin = std::getenv("GOMP_SPINCOUNT")) return std::string("spin ") + spin;
+  if (const char* policy = std::getenv("OMP_WAIT_POLICY")) return policy;
+  return "libgomp default";
 }
 
 }  // namespace firn

@@ -64,6 +64,7 @@ RunSummary run(const LoadedScene& loaded, const RunOptions& options, const Backe
   RunSummary summary;
   summary.particles = sim.particle_count();
   summary.threads = backend.threads();
+  summary.openmp_wait = openmp_wait();
   summary.backend = Backend::kName;
   summary.precision = scene.precision;
 

@@ -19,7 +19,7 @@ namespace {
 
 // summary.json's keys (engine/output/run_summary.hpp), in the order a reader wants them.
 const char* const kSummaryKeys[] = {"status", "error", "steps", "particles", "wall_seconds", "step_seconds",
-                                    "particle_steps_per_second", "threads", "backend", "precision",
+                                    "particle_steps_per_second", "threads", "openmp_wait", "backend", "precision",
                                     "peak_memory_mb"};
 
 bool exists(const std::string& path) { return std::filesystem::exists(path); }
