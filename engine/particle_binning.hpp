@@ -49,7 +49,8 @@ class ParticleBinning {
     const T origin[3] = {g.origin[0], g.origin[1], g.origin[2]}, inv_dx = g.inv_dx;
     T limit[3];
     for (int d = 0; d < 3; ++d) limit[d] = T(g.nodes[d] - ShapeT::kSupport + 1);
-    const std::size_t stride_y = std::size_t(blocks[2]), stride_x = std::size_t(blocks[1]) * stride_y;
+    // BlockBox's numbering: x fastest.
+    const std::size_t stride_y = std::size_t(blocks[0]), stride_z = std::size_t(blocks[1]) * stride_y;
     const T* const x[3] = {pv.x[0], pv.x[1], pv.x[2]};
     // Particle p along axis d in cells from where its stencil starts (its base node is int(s)).
     const auto cell = [=] FIRN_HD_LAMBDA(std::size_t p, int d) {
@@ -71,7 +72,7 @@ class ParticleBinning {
               const T s = cell(p, d);
               const std::uint32_t in = (s >= T(0)) & (s < limit[d]);  // false for NaN
               const std::uint32_t b = in ? std::uint32_t(int(s) >> kBlockShift) : 0u;
-              key += b * std::uint32_t(d == 0 ? stride_x : d == 1 ? stride_y : 1);
+              key += b * std::uint32_t(d == 0 ? 1 : d == 1 ? stride_y : stride_z);
               inside &= in;
             }
             keys[p] = key;

@@ -48,18 +48,18 @@ struct ParticleBlockLists {  // emit
 
 // Block b is written by the particle blocks b - o, o in {0,1}^3, found as ids b - id(o) with no
 // coordinates (which took three integer divisions per block of the box; issue 15): where a
-// coordinate of b - o would be negative, the id either is negative (x) or, borrowing, lands in the
-// box's last layer along z or y, which holds no particle block (a particle's stencil starts at most
+// coordinate of b - o would be negative, the id either is negative (z) or, borrowing, lands in the
+// box's last layer along x or y, which holds no particle block (a particle's stencil starts at most
 // at node count - support, blocks[d] = ((nodes - 1) >> kBlockShift) + 2: engine/sparse_grid.hpp).
 struct ActiveBlock {  // classify: 0 for a block some particle block writes, else -1
   const std::uint8_t* occupied;
   BlockBox box;
 
   FIRN_HD int operator()(std::size_t b) const {
-    const std::size_t yz = std::size_t(box.count[1]) * box.count[2], z = std::size_t(box.count[2]);
+    const std::size_t y = std::size_t(box.count[0]), xy = std::size_t(box.count[0]) * box.count[1];
     int written = 0;
     for (int o = 0; o < 8; ++o) {
-      const std::size_t offset = (o >> 2) * yz + ((o >> 1) & 1) * z + (o & 1);
+      const std::size_t offset = (o >> 2) + ((o >> 1) & 1) * y + (o & 1) * xy;
       written |= b >= offset ? occupied[b - offset] : 0;
     }
     return written ? 0 : -1;
