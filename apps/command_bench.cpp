@@ -21,7 +21,7 @@
 #include "apps/commands.hpp"
 #include "apps/launch_table.hpp"
 #include "engine/material_catalog.hpp"
-#include "engine/output/run_summary.hpp"
+#include "engine/openmp_wait.hpp"
 #include "studies/bench/step_benchmark.hpp"
 #include "studies/bench/surface_benchmark.hpp"
 

@@ -1,57 +1,72 @@
 // The `firn` command line (DESIGN.md section 5): thin, it parses arguments and calls the engine.
 #include <CLI/CLI.hpp>
 
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <fstream>
+#include <string>
+#include <thread>
 
 #include "apps/commands.hpp"
+#include "engine/openmp_wait.hpp"
 #include "engine/version.hpp"
 
 namespace {
 
-// How OpenMP's idle threads wait between the step's launches (issue 15). A launch on a team whose
-// threads sleep (OMP_WAIT_POLICY=passive) first wakes them, and a thread that finishes early sleeps
-// and is woken again at the end; the snowball pair's step has some 21 launches, and on 2 vCPUs
-// under KVM those wake-ups cost it 5-13% of its speed and cube_drop 3-8% against threads that spin
-// a while first (GOMP_SPINCOUNT=10000). Threads that spin take the cores other processes need,
-// though: with another process busy on one of the two cores the same spin made both 8-13% slower
-// than passive waiting, and libgomp's default spin of 300,000 about halved the pair (issue 15,
-// docs/performance.md). So firn spins briefly where nothing else is running as it starts and waits
-// passively otherwise, unless the user set OMP_WAIT_POLICY or GOMP_SPINCOUNT. libgomp reads them
-// as it loads, before main, so firn sets one and restarts itself once.
-constexpr const char* kSpinCount = "10000";
-
-// Whether other tasks keep running: the fourth field of /proc/loadavg counts the tasks runnable at
-// the moment it is read, this process among them, so the fewest over ten readings 1 ms apart is
-// above one only where another task ran at each (the shell that started firn may still be runnable
-// at the first).
-bool others_running() {
-  int fewest = 1 << 30;
-  for (int i = 0; i < 10; ++i) {
-    if (i > 0) usleep(1000);
-    std::FILE* f = std::fopen("/proc/loadavg", "r");
-    if (!f) return true;  // unknown: assume a shared machine
-    double load[3];
-    int runnable = 0, total = 0;
-    const int read = std::fscanf(f, "%lf %lf %lf %d/%d", &load[0], &load[1], &load[2], &runnable, &total);
-    std::fclose(f);
-    if (read != 5) return true;
-    fewest = std::min(fewest, runnable);
+// The threads `--threads` asks for in argv, or `cpus` (the default: all of them).
+int requested_threads(char** argv, int cpus) {
+  for (int i = 1; argv[i]; ++i) {
+    const std::string a = argv[i];
+    if (a == "--threads" && argv[i + 1]) return std::max(1, std::atoi(argv[i + 1]));
+    if (a.rfind("--threads=", 0) == 0) return std::max(1, std::atoi(a.c_str() + 10));
   }
-  return fewest > 1;
+  return cpus;
 }
 
+// The tasks other than this one that were runnable at each of ten readings of /proc/loadavg, 1 ms
+// apart (the shell that started firn may still be runnable at the first), or -1 if unreadable.
+int others_runnable() {
+  int fewest = -1;
+  for (int i = 0; i < 10; ++i) {
+    if (i > 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    std::ifstream in("/proc/loadavg");
+    std::string text;
+    std::getline(in, text);
+    const int runnable = firn::runnable_tasks(text);  // this process among them
+    if (runnable < 1) return -1;
+    fewest = fewest < 0 ? runnable - 1 : std::min(fewest, runnable - 1);
+  }
+  return fewest;
+}
+
+// Chooses how idle OpenMP threads wait (engine/openmp_wait.hpp) unless the user did. libgomp reads
+// the variables as it loads, before main, so firn sets one and restarts itself once, marking the
+// variable as its own (FIRN_OPENMP_WAIT); the restarted firn records the choice and removes both,
+// so that the processes it starts (a sweep's runs, sbatch's jobs) choose for themselves.
 void choose_openmp_waiting(char** argv) {
+  if (const char* mine = std::getenv("FIRN_OPENMP_WAIT")) {
+    firn::record_openmp_wait(mine);
+    unsetenv(std::string(mine) == "passive" ? "OMP_WAIT_POLICY" : "GOMP_SPINCOUNT");
+    unsetenv("FIRN_OPENMP_WAIT");
+    return;
+  }
   if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT")) return;
-  if (others_running())
-    setenv("OMP_WAIT_POLICY", "passive", 1);
-  else
-    setenv("GOMP_SPINCOUNT", kSpinCount, 1);
-  execv("/proc/self/exe", argv);  // returns only if it failed: then carry on as we are
+  cpu_set_t set;
+  const int cpus = sched_getaffinity(0, sizeof(set), &set) == 0 ? CPU_COUNT(&set) : 1;
+  const bool spin = firn::spin_while_waiting(others_runnable(), cpus, requested_threads(argv, cpus));
+  const std::string count = std::to_string(firn::kOpenMPSpinCount);
+  const char* variable = spin ? "GOMP_SPINCOUNT" : "OMP_WAIT_POLICY";
+  setenv(variable, spin ? count.c_str() : "passive", 1);
+  setenv("FIRN_OPENMP_WAIT", spin ? ("spin:" + count).c_str() : "passive", 1);
+  execv("/proc/self/exe", argv);  // returns only if it failed: then carry on as libgomp has it
+  unsetenv(variable);
+  unsetenv("FIRN_OPENMP_WAIT");
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "kernels/backend/block_colouring.hpp"
 #include "kernels/backend/schedule.hpp"
 #include "kernels/binning_view.hpp"
+#include "kernels/block_box.hpp"
 #include "kernels/block_lists.hpp"
 #include "kernels/combine.hpp"
 #include "kernels/grid_geometry.hpp"
@@ -49,8 +50,9 @@ class ParticleBinning {
     const T origin[3] = {g.origin[0], g.origin[1], g.origin[2]}, inv_dx = g.inv_dx;
     T limit[3];
     for (int d = 0; d < 3; ++d) limit[d] = T(g.nodes[d] - ShapeT::kSupport + 1);
-    // BlockBox's numbering: x fastest.
-    const std::size_t stride_y = std::size_t(blocks[0]), stride_z = std::size_t(blocks[1]) * stride_y;
+    const BlockBox box{{blocks[0], blocks[1], blocks[2]}};
+    const std::size_t stride_x = std::size_t(box.stride(0)), stride_y = std::size_t(box.stride(1)),
+                      stride_z = std::size_t(box.stride(2));
     const T* const x[3] = {pv.x[0], pv.x[1], pv.x[2]};
     // Particle p along axis d in cells from where its stencil starts (its base node is int(s)).
     const auto cell = [=] FIRN_HD_LAMBDA(std::size_t p, int d) {
@@ -72,7 +74,7 @@ class ParticleBinning {
               const T s = cell(p, d);
               const std::uint32_t in = (s >= T(0)) & (s < limit[d]);  // false for NaN
               const std::uint32_t b = in ? std::uint32_t(int(s) >> kBlockShift) : 0u;
-              key += b * std::uint32_t(d == 0 ? 1 : d == 1 ? stride_y : stride_z);
+              key += b * std::uint32_t(d == 0 ? stride_x : d == 1 ? stride_y : stride_z);
               inside &= in;
             }
             keys[p] = key;

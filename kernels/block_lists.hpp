@@ -56,10 +56,9 @@ struct ActiveBlock {  // classify: 0 for a block some particle block writes, els
   BlockBox box;
 
   FIRN_HD int operator()(std::size_t b) const {
-    const std::size_t y = std::size_t(box.count[0]), xy = std::size_t(box.count[0]) * box.count[1];
     int written = 0;
     for (int o = 0; o < 8; ++o) {
-      const std::size_t offset = (o >> 2) + ((o >> 1) & 1) * y + (o & 1) * xy;
+      const std::size_t offset = std::size_t(box.id(o >> 2, (o >> 1) & 1, o & 1));
       written |= b >= offset ? occupied[b - offset] : 0;
     }
     return written ? 0 : -1;

@@ -328,8 +328,8 @@ FIRN_HD BlockReactions<T> node_block_update(T* data, const int block[3], std::ui
 template <class T, Transfer kTransfer>
 FIRN_HD void grid_update_block(T* data, const int block[3], std::size_t slot, const GridUpdateParams<T>& p) {
   const std::uint32_t near = colliders_near_block(block, p);
-  const bool free = near == 0 && kTransfer != Transfer::flip && !block_in_wall_band(block, p);
-  (free ? free_block_update<T, kTransfer>(data, p) : node_block_update<T, kTransfer>(data, block, near, slot, p))
+  const bool is_free = near == 0 && kTransfer != Transfer::flip && !block_in_wall_band(block, p);
+  (is_free ? free_block_update<T, kTransfer>(data, p) : node_block_update<T, kTransfer>(data, block, near, slot, p))
       .write(slot, p);
 }
 

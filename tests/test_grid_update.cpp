@@ -28,9 +28,9 @@ GridUpdateParams<T> free_params(T damping_factor) {
   return p;
 }
 
-template <class T>
-void check_free_block_is_the_node_path(T damping_factor) {
-  constexpr int K = GridChannels<Transfer::apic>::kCount;
+template <class T, Transfer kTransfer>
+void check_free_block_is_the_node_path(T damping_factor, bool gravity = true) {
+  constexpr int K = GridChannels<kTransfer>::kCount;
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<T> data(K * kBlockNodes);
@@ -41,16 +41,17 @@ void check_free_block_is_the_node_path(T damping_factor) {
   }
   const int block[3] = {2, 3, 4};  // its nodes are 8-11, 12-15, 16-19: in no wall's band
   GridUpdateParams<T> p = free_params(damping_factor);
+  if (!gravity) p.gravity[1] = p.gravity[2] = T(0);
   ASSERT_FALSE(block_in_wall_band(block, p));
 
   // Each path with and without an energy budget. A plane half a cell below the block's lowest
   // nodes reaches the block but holds none of its nodes: it sends the block down the node-by-node
   // path and changes nothing there.
   std::vector<T> vectorised = data, vectorised_budget = data, node_by_node = data, node_budget = data;
-  grid_update_block<T, Transfer::apic>(vectorised.data(), block, 0, p);
+  grid_update_block<T, kTransfer>(vectorised.data(), block, 0, p);
   T free_work[kWorkKinds] = {}, node_work[kWorkKinds] = {}, reactions[kReactionComponents] = {};
   p.work = free_work;
-  grid_update_block<T, Transfer::apic>(vectorised_budget.data(), block, 0, p);
+  grid_update_block<T, kTransfer>(vectorised_budget.data(), block, 0, p);
   Collider<T> plane;
   plane.center[1] = T(block[1] * kBlockSize) * p.dx - (T(kColliderSkin) + T(0.5)) * p.dx;
   p.colliders[0] = plane;
@@ -58,10 +59,11 @@ void check_free_block_is_the_node_path(T damping_factor) {
   p.reactions = reactions;
   ASSERT_EQ(colliders_near_block(block, p), 1u);
   p.work = nullptr;
-  grid_update_block<T, Transfer::apic>(node_by_node.data(), block, 0, p);
+  grid_update_block<T, kTransfer>(node_by_node.data(), block, 0, p);
   p.work = node_work;
-  grid_update_block<T, Transfer::apic>(node_budget.data(), block, 0, p);
-  EXPECT_NE(free_work[kGravityWork], T(0));
+  grid_update_block<T, kTransfer>(node_budget.data(), block, 0, p);
+  if (gravity) EXPECT_NE(free_work[kGravityWork], T(0));
+  else EXPECT_EQ(free_work[kGravityWork], T(0));
   EXPECT_EQ(std::memcmp(&free_work[kGravityWork], &node_work[kGravityWork], sizeof(T)), 0);
   EXPECT_EQ(node_work[kColliderWork], T(0));
   EXPECT_EQ(std::memcmp(vectorised.data(), node_by_node.data(), data.size() * sizeof(T)), 0);
@@ -77,10 +79,12 @@ void check_free_block_is_the_node_path(T damping_factor) {
 }
 
 TEST(GridUpdate, AFreeBlockTakesTheNodeByNodeBits) {
-  check_free_block_is_the_node_path<float>(1.0f);
-  check_free_block_is_the_node_path<float>(1.0f / 1.3f);
-  check_free_block_is_the_node_path<double>(1.0);
-  check_free_block_is_the_node_path<double>(1.0 / 1.3);
+  check_free_block_is_the_node_path<float, Transfer::apic>(1.0f);
+  check_free_block_is_the_node_path<float, Transfer::apic>(1.0f / 1.3f);
+  check_free_block_is_the_node_path<float, Transfer::apic>(1.0f, /*gravity=*/false);
+  check_free_block_is_the_node_path<float, Transfer::pic>(1.0f / 1.3f);
+  check_free_block_is_the_node_path<double, Transfer::apic>(1.0);
+  check_free_block_is_the_node_path<double, Transfer::apic>(1.0 / 1.3);
 }
 
 // block_in_wall_band(block) is true exactly where a node of the block is in a wall's band.

@@ -3,7 +3,6 @@
 #include <sys/resource.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 namespace firn {
@@ -52,12 +51,6 @@ double peak_memory_mb() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return double(u.ru_maxrss) / 1024.0;  // ru_maxrss is in kB on Linux
-}
-
-std::string openmp_wait() {
-  if (const char* spin = std::getenv("GOMP_SPINCOUNT")) return std::string("spin ") + spin;
-  if (const char* policy = std::getenv("OMP_WAIT_POLICY")) return policy;
-  return "libgomp default";
 }
 
 }  // namespace firn

@@ -18,7 +18,7 @@ struct RunSummary {
   double wall_seconds = 0;
   double step_seconds = 0;  // inside the step loop
   int threads = 0;
-  std::string openmp_wait;  // how idle OpenMP threads waited (openmp_wait())
+  std::string openmp_wait;  // how idle OpenMP threads waited (engine/openmp_wait.hpp)
   std::string backend = "openmp";
   std::string precision = "float";
   double peak_memory_mb = 0;
@@ -31,10 +31,5 @@ struct RunSummary {
 
 // Peak resident memory of this process so far (MB).
 double peak_memory_mb();
-
-// How this process's idle OpenMP threads wait, from the variables libgomp read as it loaded (firn
-// sets one as it starts: apps/firn.cpp): "spin N" for GOMP_SPINCOUNT=N, "passive" or "active" for
-// OMP_WAIT_POLICY, "libgomp default" for neither. A rate depends on it (README, "--threads").
-std::string openmp_wait();
 
 }  // namespace firn

@@ -12,6 +12,7 @@
 #include <type_traits>
 
 #include "engine/output/atomic_file.hpp"
+#include "engine/openmp_wait.hpp"
 #include "engine/output/frame_files.hpp"
 #include "engine/output/vtp_writer.hpp"
 #include "engine/scene/checkpoint.hpp"

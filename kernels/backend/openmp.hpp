@@ -84,11 +84,8 @@ struct OpenMP {
       // The implicit barrier at the end of each loop separates the colours. Runs of kScatterChunk
       // blocks rather than single ones (issue 15, Intel Xeon, 2 threads, P2G alternated over 8
       // rounds: tire_on_snow 17.2-18.5 -> 15.4-18.1 ms per step, snowball_pair 6.8-7.5 -> 6.2-7.4;
-      // faster in 19 of 21 runs, cube_drop's included): a colour's consecutive blocks are neighbours
-      // two apart along the fastest axis of the numbering (z then, x now), whose scratch both flush
-      // into the slot of the block between them, so handing them to two threads had them write the
-      // same cache lines (a likely cause, not measured; the gather's runs above avoid the same in
-      // the particle columns).
+      // faster in 19 of 21 runs, cube_drop's included). Why runs help was not measured (no
+      // hardware counters there).
 #pragma omp for schedule(dynamic, kScatterChunk)
       for (long i = begin; i < end; ++i)
         if (scatter_keeps(f, colouring.blocks[i])) f(colouring.blocks[i]);
