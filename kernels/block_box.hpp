@@ -2,10 +2,11 @@
 // b = (bz * count[1] + by) * count[0] + bx, x fastest. The sparse grid's block map
 // (kernels/block_window.hpp), the binning's keys (engine/particle_binning.hpp) and the block lists
 // (kernels/block_lists.hpp) all number blocks this way, and G2P walks the particles in that order
-// (P2G too, within each colour of blocks). x is fastest because the scenes' bulk motion is along x (the tire rolls and the
-// conveyor carries the bed along x, the snowballs fly along x): a particle that crosses into the
-// next block along x is then found in the block the walk has just left or is about to reach, in
-// the cache, until the arrays are reordered (issue 15, docs/performance.md).
+// (P2G too, within each colour of blocks). x is fastest because the scenes' bulk motion is along
+// x (the tire rolls and the conveyor carries the bed along x, the snowballs fly along x): a
+// particle that crosses into the next block along x is then found in the block the walk has just
+// left or is about to reach, in the cache, until the arrays are reordered (issue 15,
+// docs/performance.md).
 #pragma once
 
 #include <cstdint>
