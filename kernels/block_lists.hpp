@@ -56,9 +56,10 @@ struct ActiveBlock {  // classify: 0 for a block some particle block writes, els
   BlockBox box;
 
   FIRN_HD int operator()(std::size_t b) const {
+    const std::size_t sx = std::size_t(box.stride(0)), sy = std::size_t(box.stride(1)), sz = std::size_t(box.stride(2));
     int written = 0;
     for (int o = 0; o < 8; ++o) {
-      const std::size_t offset = std::size_t(box.id(o >> 2, (o >> 1) & 1, o & 1));
+      const std::size_t offset = (o >> 2) * sx + ((o >> 1) & 1) * sy + (o & 1) * sz;  // box.id(o)
       written |= b >= offset ? occupied[b - offset] : 0;
     }
     return written ? 0 : -1;
