@@ -46,13 +46,13 @@ int others_runnable() {
 }
 
 // Chooses how idle OpenMP threads wait (engine/openmp_wait.hpp) unless the user did. libgomp reads
-// the variables as it loads, before main, so firn sets one and restarts itself once, marking the
-// variable as its own (FIRN_OPENMP_WAIT); the restarted firn records the choice and removes both,
-// so that the processes it starts (a sweep's runs, sbatch's jobs) choose for themselves.
+// the variables as it loads, before main, so firn sets one and restarts itself once, naming it in
+// FIRN_OPENMP_WAIT; the restarted firn records the choice and removes both, so that the processes
+// it starts (a sweep's runs, sbatch's jobs) choose for themselves.
 void choose_openmp_waiting(char** argv) {
-  if (const char* mine = std::getenv("FIRN_OPENMP_WAIT")) {
-    firn::record_openmp_wait(mine);
-    unsetenv(std::string(mine) == "passive" ? "OMP_WAIT_POLICY" : "GOMP_SPINCOUNT");
+  if (const char* variable = std::getenv("FIRN_OPENMP_WAIT")) {
+    firn::record_openmp_wait(firn::openmp_wait());
+    unsetenv(std::string(variable).c_str());
     unsetenv("FIRN_OPENMP_WAIT");
     return;
   }
@@ -60,10 +60,9 @@ void choose_openmp_waiting(char** argv) {
   cpu_set_t set;
   const int cpus = sched_getaffinity(0, sizeof(set), &set) == 0 ? CPU_COUNT(&set) : 1;
   const bool spin = firn::spin_while_waiting(others_runnable(), cpus, requested_threads(argv, cpus));
-  const std::string count = std::to_string(firn::kOpenMPSpinCount);
   const char* variable = spin ? "GOMP_SPINCOUNT" : "OMP_WAIT_POLICY";
-  setenv(variable, spin ? count.c_str() : "passive", 1);
-  setenv("FIRN_OPENMP_WAIT", spin ? ("spin:" + count).c_str() : "passive", 1);
+  setenv(variable, spin ? std::to_string(firn::kOpenMPSpinCount).c_str() : "passive", 1);
+  setenv("FIRN_OPENMP_WAIT", variable, 1);
   execv("/proc/self/exe", argv);  // returns only if it failed: then carry on as libgomp has it
   unsetenv(variable);
   unsetenv("FIRN_OPENMP_WAIT");
